@@ -1,0 +1,42 @@
+// What a configuration parameter is, independent of the struct that holds it: the description
+// that parsing, validation, listing and the sample file all read.
+#pragma once
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+
+namespace rays::config {
+
+enum class ParamType { Int, Double, Bool };  // same order as the alternatives of ParamValue
+enum class ParamKind {
+    Capacity,  // sizes buffers: fixed when the daemon starts
+    Tunable,   // may change at run time, within the capacities
+};
+
+using ParamValue = std::variant<int, double, bool>;
+
+template <class T>
+constexpr ParamType param_type_of() {
+    static_assert(std::is_same_v<T, int> || std::is_same_v<T, double> || std::is_same_v<T, bool>,
+                  "a parameter is an int, a double or a bool");
+    if constexpr (std::is_same_v<T, int>) return ParamType::Int;
+    else if constexpr (std::is_same_v<T, double>) return ParamType::Double;
+    else return ParamType::Bool;
+}
+
+struct ParamInfo {
+    std::string name;  // "section.key", e.g. "rays.alpha" is key alpha under [rays]
+    ParamType type = ParamType::Double;
+    ParamKind kind = ParamKind::Tunable;
+    std::string_view unit;  // "px", "grey/px", ... or "" for a plain number (unit and doc: string literals)
+    double min = 0.0;       // inclusive range; unused for bools
+    double max = 0.0;
+    ParamValue default_value;  // read from the settings struct's default member initialiser
+    std::string_view doc;      // one line
+
+    std::string_view section() const { return std::string_view(name).substr(0, name.find('.')); }
+    std::string_view key() const { return std::string_view(name).substr(name.find('.') + 1); }
+};
+
+}  // namespace rays::config

@@ -1,0 +1,60 @@
+// Contour extraction with active rays (§2.2–2.4) and its any-time refinement (§2.3, Fig. 6).
+#pragma once
+#include <vector>
+
+#include "core/clock.hpp"
+#include "core/contour.hpp"
+#include "core/polar_prior.hpp"
+#include "core/ray_hypotheses.hpp"
+#include "core/ray_table.hpp"
+#include "core/ring_dp.hpp"
+#include "core/target_model.hpp"
+
+namespace rays {
+
+class ActiveRays {
+public:
+    explicit ActiveRays(const TrackerCapacity& capacity);
+
+    // Applies tunables within the capacities; false (and nothing changed) when they do not fit.
+    bool configure(const RaysTunables& tunables);
+    const RayTable& table() const { return table_; }
+
+    // Extracts the contour round m on the smoothed image. `prior` says where the contour is expected
+    // (the previous frame's contour, or a circle); `use_temporal` enables the pull toward it; `model`
+    // carries the learned polarity, appearance and rim contrast (ignored while !model.valid).
+    // Refinement stops before `deadline` (read through `clock`); the coarse contour of the first
+    // centroid iteration is always computed. `max_level` ≥ 0 stops refinement after that level
+    // (for measuring the any-time curve). No allocation.
+    void extract(const FloatImage& image, Point m, PolarPrior& prior, bool use_temporal, const TargetModel& model,
+                 const Clock& clock, TimePoint deadline, Contour& out, int max_level = -1);
+
+private:
+    void shoot(int ray, const FloatImage& image, Point m, const PolarPrior& prior, bool use_temporal,
+               const TargetModel& model);
+    void solve(float radius, const PolarPrior& prior);
+    void write_contour(Point m, Contour& out) const;
+    int previous_active(int ray) const;
+    int next_active(int ray) const;
+
+    TrackerCapacity capacity_;
+    RaysTunables t_;
+    RayTable table_;
+    RayProfiler profiler_;
+    RingDp dp_;
+    int state_stride_;                    // max_hypotheses + 1: the "no edge" state is last
+    float rim_contrast_ = 0;              // normaliser of eq. 7 for this extraction
+
+    std::vector<unsigned char> active_;   // per ray: shot at the current reference point
+    std::vector<int> hyp_count_;
+    std::vector<Hypothesis> hyp_;         // per ray × max_hypotheses
+    std::vector<float> cost_;             // per ray × states: external energy, per radian
+    std::vector<float> state_lambda_;     // per ray × states
+    std::vector<float> lambda_end_;       // per ray: last λ inside the image
+    std::vector<int> chosen_;             // per ray: state picked by the DP
+    std::vector<float> lambda_out_;       // per ray: contour λ (no-edge rays interpolated)
+    std::vector<int> node_ray_, node_state_, pending_;
+    std::vector<float> pending_gap_, unary_;
+};
+
+}  // namespace rays

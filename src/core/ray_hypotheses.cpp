@@ -1,0 +1,103 @@
+#include "core/ray_hypotheses.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rays {
+namespace {
+
+constexpr float kEdgeMarginPx = 1.0f;  // samples this close to an edge belong to neither side
+constexpr float kOutsideBandPx = 4.0f; // the band that should look like background
+
+}  // namespace
+
+RayProfiler::RayProfiler(const TrackerCapacity& capacity)
+    : profile_(capacity.max_samples),
+      grad_(capacity.max_samples),
+      prefix_(capacity.max_samples + 1),
+      prefix_sq_(capacity.max_samples + 1),
+      candidates_(capacity.max_samples) {}
+
+bool RayProfiler::configure(const RaysTunables& t) {
+    const int n = static_cast<int>(std::floor((t.lambda_max_px - t.lambda_min_px) / t.step_px)) + 1;
+    if (n < 3 || n > static_cast<int>(profile_.size())) return false;
+    samples_ = n;
+    k_ = t.hypotheses;
+    lambda_min_ = static_cast<float>(t.lambda_min_px);
+    step_ = static_cast<float>(t.step_px);
+    floor_ = static_cast<float>(t.edge_floor);
+    separation_ = static_cast<float>(t.hypothesis_separation_px);
+    return true;
+}
+
+int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, float lambda_limit, Hypothesis* out,
+                       float& lambda_end) {
+    constexpr double last = kFrameSize - 1;
+    // The ray ends where it leaves the image: λ ≤ the distance to the border along (c, s).
+    double reach = lambda_limit;
+    if (c > 1e-9) reach = std::min(reach, (last - m.x) / c);
+    if (c < -1e-9) reach = std::min(reach, -m.x / c);
+    if (s > 1e-9) reach = std::min(reach, (last - m.y) / s);
+    if (s < -1e-9) reach = std::min(reach, -m.y / s);
+    const int n = std::clamp(static_cast<int>(std::floor((reach - lambda_min_) / step_ + 1e-6)) + 1, 0, samples_);
+    const float mx = static_cast<float>(m.x), my = static_cast<float>(m.y);
+    const float cx = static_cast<float>(c), sy = static_cast<float>(s);
+    // eq. 6: ρ_m(φ, λ) = f(x_m + λ cos φ, y_m + λ sin φ), bilinear.
+    prefix_[0] = prefix_sq_[0] = 0.0f;
+    for (int j = 0; j < n; ++j) {
+        const float lam = lambda_min_ + static_cast<float>(j) * step_;
+        const float x = std::clamp(mx + lam * cx, 0.0f, static_cast<float>(last));
+        const float y = std::clamp(my + lam * sy, 0.0f, static_cast<float>(last));
+        const int x0 = std::min(static_cast<int>(x), kFrameSize - 2);
+        const int y0 = std::min(static_cast<int>(y), kFrameSize - 2);
+        const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
+        const float* r0 = image.row(y0) + x0;
+        const float* r1 = r0 + kFrameSize;
+        const float top = r0[0] + fx * (r0[1] - r0[0]);
+        const float bottom = r1[0] + fx * (r1[1] - r1[0]);
+        const float v = top + fy * (bottom - top);
+        profile_[j] = v;
+        prefix_[j + 1] = prefix_[j] + v;  // running sums make the region term O(1) per hypothesis
+        prefix_sq_[j + 1] = prefix_sq_[j] + v * v;
+    }
+    lambda_end = lambda_min_ + static_cast<float>(std::max(0, n - 1)) * step_;
+    if (n < 3) return 0;
+
+    // eq. 7/12: H = −|∂ρ/∂λ|², central differences; candidates are local maxima of |∂ρ/∂λ|.
+    const float inv2step = 0.5f / step_;
+    int nc = 0;
+    grad_[0] = grad_[n - 1] = 0.0f;
+    for (int j = 1; j < n - 1; ++j) grad_[j] = (profile_[j + 1] - profile_[j - 1]) * inv2step;
+    for (int j = 1; j < n - 1; ++j) {
+        const float a = std::abs(grad_[j]);
+        if (a >= floor_ && a >= std::abs(grad_[j - 1]) && a > std::abs(grad_[j + 1])) candidates_[nc++] = j;
+    }
+    // eq. 13: hypotheses in order of decreasing |∂ρ/∂λ|²; eq. 15's wish for well-separated
+    // hypotheses is kept as a minimum separation between them.
+    std::sort(candidates_.begin(), candidates_.begin() + nc,
+              [&](int a, int b) { return std::abs(grad_[a]) > std::abs(grad_[b]); });
+    const int margin = static_cast<int>(std::ceil(kEdgeMarginPx / step_));
+    const int band = std::max(1, static_cast<int>(std::lround(kOutsideBandPx / step_)));
+    int kept = 0;
+    for (int ci = 0; ci < nc && kept < k_; ++ci) {
+        const int j = candidates_[ci];
+        const float a = std::abs(grad_[j - 1]), b = std::abs(grad_[j]), cc = std::abs(grad_[j + 1]);
+        const float denom = a - 2.0f * b + cc;
+        const float offset = denom < 0.0f ? std::clamp(0.5f * (a - cc) / denom, -0.5f, 0.5f) : 0.0f;
+        const float lam = lambda_min_ + (static_cast<float>(j) + offset) * step_;
+        bool separated = true;
+        for (int h = 0; h < kept; ++h) separated = separated && std::abs(out[h].lambda - lam) >= separation_;
+        if (!separated) continue;
+        Hypothesis& hyp = out[kept++];
+        hyp.lambda = lam;
+        hyp.grad = grad_[j];
+        const int in_end = std::max(1, j - margin);  // samples [0, in_end)
+        hyp.inside_mean = prefix_[in_end] / static_cast<float>(in_end);
+        hyp.inside_msq = prefix_sq_[in_end] / static_cast<float>(in_end);
+        const int o0 = std::min(n, j + margin), o1 = std::min(n, j + margin + band);
+        hyp.outside_mean = o1 > o0 ? (prefix_[o1] - prefix_[o0]) / static_cast<float>(o1 - o0) : -1.0f;
+    }
+    return kept;
+}
+
+}  // namespace rays

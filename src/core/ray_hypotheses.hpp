@@ -1,0 +1,41 @@
+// One ray's 1-D search (§2.2, §2.4): sample the smoothed image along the ray (eq. 6), take the
+// derivative of the profile (eq. 7, 12) and keep up to K contour hypotheses (eq. 13).
+#pragma once
+#include <vector>
+
+#include "core/image.hpp"
+#include "core/tracker_config.hpp"
+
+namespace rays {
+
+struct Hypothesis {
+    float lambda = 0;       // distance from m along the ray, px (sub-sample refined)
+    float grad = 0;         // dρ/dλ at lambda, grey/px; negative where the outside is darker
+    float inside_mean = 0;  // mean grey of the samples between m and the edge
+    float inside_msq = 0;   // mean of their squares (for the region term's spread)
+    float outside_mean = -1;  // mean grey of a short band just outside the edge; < 0 when off the image
+};
+
+class RayProfiler {
+public:
+    explicit RayProfiler(const TrackerCapacity& capacity);
+
+    // Takes the sampling settings; returns false when they need more samples than the capacity.
+    bool configure(const RaysTunables& t);
+    int samples() const { return samples_; }
+
+    // Samples the ray from m in direction (c, s) with bilinear interpolation up to λ = lambda_limit
+    // (and the image border) and writes at most K hypotheses, strongest first, into `out`.
+    // Returns how many. Also reports the last λ sampled.
+    int shoot(const FloatImage& image, Point m, double c, double s, float lambda_limit, Hypothesis* out,
+              float& lambda_end);
+
+private:
+    int samples_ = 0;
+    int k_ = 0;
+    float lambda_min_ = 0, step_ = 1, floor_ = 0, separation_ = 0;
+    std::vector<float> profile_, grad_, prefix_, prefix_sq_;
+    std::vector<int> candidates_;
+};
+
+}  // namespace rays

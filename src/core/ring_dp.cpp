@@ -1,0 +1,149 @@
+#include "core/ring_dp.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace rays {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr long kEnumerateLimit = 4096;  // rings with fewer joint states are solved by enumeration
+
+}  // namespace
+
+RingDp::RingDp(int max_nodes, int max_states)
+    : max_nodes_(max_nodes),
+      max_states_(max_states),
+      lam_(static_cast<std::size_t>(max_nodes) * max_states),
+      unary_(lam_.size()),
+      gap_(max_nodes),
+      states_(max_nodes),
+      value_(static_cast<std::size_t>(max_states) * max_states),
+      next_value_(value_.size()),
+      back_(static_cast<std::size_t>(max_nodes) * max_states * max_states),
+      scratch_(max_nodes) {}
+
+void RingDp::reset(int nodes) { nodes_ = std::clamp(nodes, 0, max_nodes_); }
+
+void RingDp::set_node(int i, int states, const float* lam, const float* unary, float gap_to_next) {
+    states_[i] = states;
+    for (int s = 0; s < states; ++s) {
+        lam_[i * max_states_ + s] = lam[s];
+        unary_[i * max_states_ + s] = unary[s];
+    }
+    gap_[i] = gap_to_next;
+}
+
+double RingDp::energy(double alpha, double beta, const int* states) const {
+    const int m = nodes_;
+    double e = 0.0;
+    for (int i = 0; i < m; ++i) {
+        const int prev = (i + m - 1) % m, next = (i + 1) % m;
+        const double l0 = lam(prev, states[prev]), l1 = lam(i, states[i]), l2 = lam(next, states[next]);
+        e += unary(i, states[i]);
+        e += alpha / gap_[i] * (l2 - l1) * (l2 - l1);                        // eq. 9, α|λ'|²
+        const double d = (l2 - l1) / gap_[i] - (l1 - l0) / gap_[prev];
+        e += beta / (0.5 * (gap_[prev] + gap_[i])) * d * d;                  // eq. 9, β|λ''|²
+    }
+    return e;
+}
+
+double RingDp::enumerate(double alpha, double beta, int* states) {
+    const int m = nodes_;
+    std::fill(scratch_.begin(), scratch_.begin() + m, 0);
+    double best = std::numeric_limits<double>::infinity();
+    for (;;) {
+        const double e = energy(alpha, beta, scratch_.data());
+        if (e < best) {
+            best = e;
+            std::copy(scratch_.begin(), scratch_.begin() + m, states);
+        }
+        int i = 0;
+        while (i < m && ++scratch_[i] == states_[i]) scratch_[i++] = 0;
+        if (i == m) return best;
+    }
+}
+
+double RingDp::chain(double alpha, double beta, int first, bool closed, int a, int b, int* states) {
+    const int m = nodes_, stride = max_states_;
+    auto node = [&](int t) { return (first + t) % m; };
+    auto pair_cost = [&](int i, float li, float lj) {  // eq. 9, α term between node i and the next
+        const float d = lj - li;
+        return static_cast<float>(alpha) / gap_[i] * d * d;
+    };
+    // V(s0, s1) for the first link.
+    const int n0 = node(0), n1 = node(1);
+    for (int p = 0; p < states_[n0]; ++p)
+        for (int q = 0; q < states_[n1]; ++q)
+            value_[p * stride + q] = (closed && (p != a || q != b))
+                                         ? kInf
+                                         : unary(n0, p) + unary(n1, q) + pair_cost(n0, lam(n0, p), lam(n1, q));
+    for (int t = 1; t + 1 < m; ++t) {
+        const int prev = node(t - 1), cur = node(t), next = node(t + 1);
+        const float gp = gap_[prev], gc = gap_[cur];
+        const float bw = static_cast<float>(beta) / (0.5f * (gp + gc));
+        unsigned char* back = &back_[static_cast<std::size_t>(t + 1) * stride * stride];
+        for (int q = 0; q < states_[cur]; ++q) {
+            const float lq = lam(cur, q);
+            for (int r = 0; r < states_[next]; ++r) {
+                const float lr = lam(next, r);
+                const float slope_out = (lr - lq) / gc;
+                float best = kInf;
+                int arg = 0;
+                for (int p = 0; p < states_[prev]; ++p) {
+                    const float d = slope_out - (lq - lam(prev, p)) / gp;
+                    const float v = value_[p * stride + q] + bw * d * d;  // eq. 9, β term
+                    if (v < best) {
+                        best = v;
+                        arg = p;
+                    }
+                }
+                next_value_[q * stride + r] = best + pair_cost(cur, lq, lr) + unary(next, r);
+                back[q * stride + r] = static_cast<unsigned char>(arg);
+            }
+        }
+        std::swap(value_, next_value_);
+    }
+    // Close: the last pair (p, q) at positions m−2, m−1.
+    const int nl = node(m - 2), nq = node(m - 1);
+    float best = kInf;
+    int bp = 0, bq = 0;
+    for (int p = 0; p < states_[nl]; ++p)
+        for (int q = 0; q < states_[nq]; ++q) {
+            float v = value_[p * stride + q];
+            if (closed) {
+                const float l0 = lam(nl, p), l1 = lam(nq, q), la = lam(n0, a), lb = lam(n1, b);
+                const float d1 = (la - l1) / gap_[nq] - (l1 - l0) / gap_[nl];
+                const float d2 = (lb - la) / gap_[n0] - (la - l1) / gap_[nq];
+                v += static_cast<float>(beta) / (0.5f * (gap_[nl] + gap_[nq])) * d1 * d1 +
+                     pair_cost(nq, l1, la) +
+                     static_cast<float>(beta) / (0.5f * (gap_[nq] + gap_[n0])) * d2 * d2;
+            }
+            if (v < best) {
+                best = v;
+                bp = p;
+                bq = q;
+            }
+        }
+    states[nq] = bq;
+    states[nl] = bp;
+    for (int t = m - 1; t >= 2; --t) {
+        const unsigned char* back = &back_[static_cast<std::size_t>(t) * stride * stride];
+        states[node(t - 2)] = back[states[node(t - 1)] * stride + states[node(t)]];
+    }
+    return best;
+}
+
+double RingDp::solve(double alpha, double beta, int* states) {
+    const int m = nodes_;
+    if (m == 0) return 0.0;
+    long joint = 1;
+    for (int i = 0; i < m && joint <= kEnumerateLimit; ++i) joint *= states_[i];
+    if (m < 4 || joint <= kEnumerateLimit) return enumerate(alpha, beta, states);
+    chain(alpha, beta, 0, false, 0, 0, states);  // pass 1: open chain
+    const int cut = m / 2;
+    chain(alpha, beta, cut, true, states[cut], states[(cut + 1) % m], states);  // pass 2: closed ring
+    return energy(alpha, beta, states);
+}
+
+}  // namespace rays

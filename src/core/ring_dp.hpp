@@ -1,0 +1,49 @@
+// Dynamic programming over the closed ring of rays (§2.4): one state per ray, minimising
+//   E = Σ_i U_i(s_i) + Σ_i a_i (λ_{i+1} − λ_i)² + Σ_i b_i (λ'_{i} − λ'_{i−1})²,
+// the discrete eq. 10 with eq. 9's first (α) and second (β) order terms, λ' = Δλ / Δφ.
+//
+// The ring is closed, never cut open for good. Small rings are solved exactly by enumeration.
+// Larger ones in two passes: (1) the chain 0…M−1 without the wrap-around terms, solved exactly;
+// (2) the ring cut between the two rays opposite the cut of pass 1, their states fixed to pass 1's
+// choice, solved exactly with every term including the wrap-around. The result is a consistent
+// closed contour whose energy is never above pass 1's choice evaluated on the ring; its distance
+// from the true optimum is bounded by tests/core/test_ring_dp.cpp against brute force.
+#pragma once
+#include <vector>
+
+namespace rays {
+
+class RingDp {
+public:
+    RingDp(int max_nodes, int max_states);
+
+    void reset(int nodes);
+    // lam and unary hold `states` values; gap is the angle (rad) to the next node round the ring.
+    void set_node(int i, int states, const float* lam, const float* unary, float gap_to_next);
+
+    // Minimises E for the given α', β' (already divided by the contour scale²). Writes one state per
+    // node and returns the energy of that choice.
+    double solve(double alpha, double beta, int* states);
+
+    // E of a given choice of states (also what the tests' brute force minimises).
+    double energy(double alpha, double beta, const int* states) const;
+
+private:
+    // Exact DP over the chain starting at node `first` and running round the ring for `len` nodes.
+    // With `closed`, the states of the first two nodes are fixed to (a, b) and the wrap-around terms
+    // back to them are included.
+    double chain(double alpha, double beta, int first, bool closed, int a, int b, int* states);
+    double enumerate(double alpha, double beta, int* states);
+    float lam(int node, int s) const { return lam_[node * max_states_ + s]; }
+    float unary(int node, int s) const { return unary_[node * max_states_ + s]; }
+
+    int max_nodes_, max_states_;
+    int nodes_ = 0;
+    std::vector<float> lam_, unary_, gap_;
+    std::vector<int> states_;
+    std::vector<float> value_, next_value_;  // V(s_{i−1}, s_i), S² per step
+    std::vector<unsigned char> back_;       // argmin s_{i−2} for each node and pair, M·S²
+    std::vector<int> scratch_;
+};
+
+}  // namespace rays

@@ -1,0 +1,57 @@
+#include "core/target_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rays {
+namespace {
+
+constexpr float kRate = 0.3f;  // weight of the newest contour in the running model
+
+}  // namespace
+
+int TargetModel::bin(float phi) {
+    const float turns = phi / (2.0f * std::numbers::pi_v<float>);
+    const int b = static_cast<int>(std::floor((turns - std::floor(turns)) * kBins));
+    return std::clamp(b, 0, kBins - 1);
+}
+
+void TargetModel::learn(const Contour& contour, std::vector<float>& scratch) {
+    std::array<float, kBins> pol{}, mean{}, count{};
+    int edges = 0;
+    float spread = 0;
+    for (int j = 0; j < contour.size; ++j) {
+        const ContourPoint& c = contour.points[j];
+        if (c.no_edge) continue;
+        const int b = bin(c.phi);
+        pol[b] += c.grad > 0 ? 1.0f : -1.0f;
+        mean[b] += c.inside_mean;
+        count[b] += 1.0f;
+        spread += c.inside_sd;
+        scratch[edges++] = std::abs(c.grad);
+    }
+    if (edges < 3) return;
+    std::nth_element(scratch.begin(), scratch.begin() + edges / 2, scratch.begin() + edges);
+    const float rim = scratch[edges / 2];
+    float global_mean = 0, global_pol = 0;
+    for (int b = 0; b < kBins; ++b) {
+        global_mean += mean[b];
+        global_pol += pol[b];
+    }
+    global_mean /= static_cast<float>(edges);
+    global_pol /= static_cast<float>(edges);
+    // Bins no ray fell into take the whole contour's values.
+    const float rate = valid ? kRate : 1.0f;
+    for (int b = 0; b < kBins; ++b) {
+        const float p = count[b] > 0 ? pol[b] / count[b] : global_pol;
+        const float m = count[b] > 0 ? mean[b] / count[b] : global_mean;
+        polarity[b] += rate * (p - polarity[b]);
+        inside_mean[b] += rate * (m - inside_mean[b]);
+    }
+    inside_spread += rate * (spread / static_cast<float>(edges) - inside_spread);
+    rim_contrast += rate * (rim - rim_contrast);
+    valid = true;
+}
+
+}  // namespace rays

@@ -1,0 +1,26 @@
+// What the tracker has learned of its target from earlier contours, for the terms beyond the
+// paper's edge energy: edge polarity, the 1-D region term and the contrast that normalises eq. 7.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "core/contour.hpp"
+
+namespace rays {
+
+struct TargetModel {
+    static constexpr int kBins = 32;  // angular bins round the target
+
+    bool valid = false;
+    std::array<float, kBins> polarity{};     // mean sign of dρ/dλ at the rim, −1 … 1
+    std::array<float, kBins> inside_mean{};  // grey level inside, looking along that direction
+    float inside_spread = 0;                 // typical grey deviation inside
+    float rim_contrast = 0;                  // median |dρ/dλ| on the rim, grey/px
+
+    static int bin(float phi);
+    void reset() { valid = false; }
+    // Learns from a contour; `scratch` holds max_rays floats (no allocation).
+    void learn(const Contour& contour, std::vector<float>& scratch);
+};
+
+}  // namespace rays

@@ -1,0 +1,127 @@
+#include "core/tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rays {
+namespace {
+
+constexpr double kStartRadiusPx = 10.0;  // least first guess of the contour size at a new target
+constexpr double kVelocityRate = 0.7;   // weight of the newest centroid step in the velocity
+
+}  // namespace
+
+const char* to_string(TrackState s) {
+    switch (s) {
+        case TrackState::Detecting: return "detecting";
+        case TrackState::Tracking: return "tracking";
+        case TrackState::Lost: return "lost";
+    }
+    return "?";
+}
+
+Tracker::Tracker(const TrackerConfig& config, const Clock& clock)
+    : clock_(clock),
+      capacity_(config.capacity),
+      rays_(config.capacity),
+      prior_(config.capacity.max_rays),
+      contour_(config.capacity),
+      last_points_(config.capacity.max_rays),
+      scratch_(config.capacity.max_rays) {
+    set_tunables(config.tunables);
+    detector_.reset(tunables_.detect);
+}
+
+bool Tracker::set_tunables(const TrackerTunables& tunables) {
+    if (!rays_.configure(tunables.rays)) {
+        rays_.configure(tunables_.rays);  // keep the previous, valid settings
+        return false;
+    }
+    tunables_ = tunables;
+    smoother_.set_sigma(tunables_.rays.sigma_px);
+    return true;
+}
+
+void Tracker::start_at(Point m) { start_point_ = m; }
+
+void Tracker::release() {
+    result_.state = TrackState::Detecting;
+    result_.has_contour = false;
+    start_point_.reset();
+}
+
+void Tracker::reinit() {
+    release();
+    detector_.reset(tunables_.detect);
+}
+
+void Tracker::remember_contour() {
+    last_count_ = contour_.size;
+    for (int i = 0; i < last_count_; ++i) last_points_[i] = contour_.points[i].p;
+}
+
+bool Tracker::begin_track(Point m, double radius, TimePoint deadline) {
+    model_.reset();
+    attention_.reset();
+    velocity_ = {};
+    prior_.set_circle(std::max(radius, kStartRadiusPx));
+    rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
+    if (attention_.check(contour_, contour_.centroid, tunables_.attention) != nullptr) return false;
+    model_.learn(contour_, scratch_);
+    remember_contour();
+    return true;
+}
+
+void Tracker::track(TimePoint deadline) {
+    const Point last = contour_.centroid;
+    const Point step = tunables_.predict ? velocity_ : Point{};
+    const Point predicted{last.x + step.x, last.y + step.y};
+    result_.predicted = predicted;
+    // The previous contour moved by the predicted step is where the target should be now.
+    for (int i = 0; i < last_count_; ++i) last_points_[i] = {last_points_[i].x + step.x, last_points_[i].y + step.y};
+    prior_.set_polygon(last_points_.data(), last_count_);
+    rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
+    if (const char* reason = attention_.check(contour_, predicted, tunables_.attention)) {
+        result_.state = TrackState::Lost;
+        result_.has_contour = false;
+        result_.lost_reason = reason;
+        lost_frames_ = 0;
+        return;
+    }
+    const Point moved{contour_.centroid.x - last.x, contour_.centroid.y - last.y};
+    velocity_ = {velocity_.x + kVelocityRate * (moved.x - velocity_.x), velocity_.y + kVelocityRate * (moved.y - velocity_.y)};
+    model_.learn(contour_, scratch_);
+    remember_contour();
+}
+
+const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) {
+    ++result_.frame;
+    result_.lost_reason = nullptr;
+    result_.detection = {};
+    smoother_.smooth(frame, smoothed_);
+
+    if (result_.state == TrackState::Lost && ++lost_frames_ >= tunables_.attention.lost_frames)
+        result_.state = TrackState::Detecting;
+
+    if (result_.state == TrackState::Tracking) {
+        track(deadline);
+    } else if (result_.state == TrackState::Detecting) {
+        bool found = false;
+        if (start_point_) {
+            found = begin_track(*start_point_, kStartRadiusPx, deadline);
+            start_point_.reset();
+        } else if (has_previous_) {
+            result_.detection = detector_.detect(previous_, frame, tunables_.detect);
+            const Detection& d = result_.detection;
+            if (d.found) found = begin_track(d.centre, d.radius_px, deadline);
+        }
+        result_.state = found ? TrackState::Tracking : TrackState::Detecting;
+        result_.has_contour = found;
+        result_.predicted = contour_.centroid;
+    }
+    previous_ = frame;
+    has_previous_ = true;
+    return result_;
+}
+
+}  // namespace rays

@@ -1,0 +1,64 @@
+// Every setting of the tracking core. Capacities size the buffers once; tunables may change later
+// (within the capacities) without allocating. The INI table in config_table.cpp documents each key.
+#pragma once
+#include <cstdint>
+
+namespace rays {
+
+struct TrackerCapacity {
+    int max_rays = 720;        // rays.max_rays: most rays per contour
+    int max_hypotheses = 6;    // rays.max_hypotheses: most edge hypotheses per ray (the "no edge" state is extra)
+    int max_samples = 160;     // rays.max_samples: most samples along one ray
+};
+
+struct RaysTunables {
+    int count = 360;               // rays.count: rays in a full contour (Δφ = 2π / count)
+    int hypotheses = 3;            // rays.hypotheses: K, edge hypotheses kept per ray (eq. 13)
+    double lambda_min_px = 2.0;    // rays.lambda_min_px: first sample along a ray
+    double lambda_max_px = 60.0;   // rays.lambda_max_px: last sample along a ray
+    double step_px = 1.0;          // rays.step_px: sample spacing along a ray
+    double sigma_px = 1.0;         // rays.sigma_px: Gaussian pre-smoothing
+    double alpha = 0.02;           // rays.alpha: first-order smoothness (eq. 9)
+    double beta = 1e-6;           // rays.beta: second-order smoothness (eq. 9)
+    double edge_floor = 2.0;       // rays.edge_floor: |dρ/dλ| below this (grey/px) is noise
+    double none_cost = 0.15;       // rays.none_cost: cost of the "no edge on this ray" state
+    double polarity_weight = 0.6;  // rays.polarity_weight: extra cost of an edge of the wrong sign
+    double region_weight = 0.8;    // rays.region_weight: 1-D region term along each ray
+    double temporal_weight = 0.3;  // rays.temporal_weight: pull toward the previous frame's contour
+    double hypothesis_separation_px = 2.0;  // rays.hypothesis_separation_px: minimum gap between hypotheses (eq. 15)
+    int centroid_rays = 32;        // rays.centroid_rays: rays used while m converges (eq. 11)
+    int centroid_iterations = 6;   // rays.centroid_iterations: cap on re-extractions
+    double centroid_tol_px = 0.3;  // rays.centroid_tol_px: stop when m moves less than this
+};
+
+struct DetectTunables {
+    double threshold = 20.0;       // detect.threshold: initial |difference| threshold (grey levels)
+    double threshold_min = 6.0;    // detect.threshold_min
+    double threshold_max = 120.0;  // detect.threshold_max
+    int min_area_px = 12;          // detect.min_area_px: smallest region taken as a target
+    int max_regions = 12;          // detect.max_regions: more regions than this means noise
+    double max_area_fraction = 0.35;  // detect.max_area_fraction: a larger region means noise or ego-motion
+};
+
+struct AttentionTunables {
+    double max_area_change = 0.6;     // attention.max_area_change: relative area change per frame
+    double max_jump_px = 20.0;        // attention.max_jump_px: centroid distance from the prediction
+    double max_none_fraction = 0.6;   // attention.max_none_fraction: rays with no edge
+    double min_area_px = 20.0;        // attention.min_area_px
+    double max_area_fraction = 0.6;   // attention.max_area_fraction: of the frame
+    int lost_frames = 1;              // attention.lost_frames: frames spent in "lost" before detecting again
+};
+
+struct TrackerTunables {
+    RaysTunables rays;
+    DetectTunables detect;
+    AttentionTunables attention;
+    bool predict = true;  // track.predict: constant-velocity prediction of m into the next frame
+};
+
+struct TrackerConfig {
+    TrackerCapacity capacity;
+    TrackerTunables tunables;
+};
+
+}  // namespace rays

@@ -1,0 +1,26 @@
+// Command line of rays-replay.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "core/image.hpp"
+#include "io/area_scaler.hpp"
+
+namespace rays::replay {
+
+struct Options {
+    std::string input;
+    std::string out;          // empty: standard output
+    std::string config;       // INI file with [rays], [detect], [attention], [track]
+    std::string overlay_dir;  // empty: no overlays
+    io::Crop crop;
+    std::optional<Point> init;  // processing pixels; empty: detect automatically
+    long budget_us = 0;         // 0: no deadline
+    bool crossings = false;
+};
+
+// Parses argv; on failure returns nothing and sets `error` (empty error with no options = --help).
+std::optional<Options> parse_options(int argc, char** argv, std::string& error);
+const char* usage();
+
+}  // namespace rays::replay

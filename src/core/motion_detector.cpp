@@ -30,9 +30,12 @@ double next_threshold(double threshold, bool too_noisy, double highest_noisy, do
 
 constexpr int kMergeGapPx = 6;  // regions this close to the largest belong to the same object
 
-// Signed difference smoothed by a 3×3 binomial filter (borders replicated), then |·| > threshold.
-void threshold_difference(const GreyImage& previous, const GreyImage& current, double threshold,
-                          Plane<float>& difference, Plane<float>& smoothed, Mask& mask) {
+constexpr double kNoiseFactor = 4.0;  // a change must stand this many noise σ above zero
+
+// Signed difference smoothed by a 3×3 binomial filter (borders replicated), stored as |·| in
+// `smoothed`. Returns the noise σ of that image, estimated robustly as 1.4826 × its median.
+double smoothed_difference(const GreyImage& previous, const GreyImage& current, Plane<float>& difference,
+                           Plane<float>& smoothed) {
     for (std::size_t i = 0; i < difference.px.size(); ++i)
         difference.px[i] = static_cast<float>(int{current.px[i]} - int{previous.px[i]});
     for (int y = 0; y < kFrameSize; ++y) {
@@ -41,15 +44,26 @@ void threshold_difference(const GreyImage& previous, const GreyImage& current, d
         for (int x = 0; x < kFrameSize; ++x)
             out[x] = 0.25f * in[x > 0 ? x - 1 : x] + 0.5f * in[x] + 0.25f * in[x + 1 < kFrameSize ? x + 1 : x];
     }
-    const float t = static_cast<float>(threshold);
+    std::array<int, 256> histogram{};
     for (int y = 0; y < kFrameSize; ++y) {
         const float* above = smoothed.row(y > 0 ? y - 1 : y);
         const float* centre = smoothed.row(y);
         const float* below = smoothed.row(y + 1 < kFrameSize ? y + 1 : y);
-        std::uint8_t* out = mask.row(y);
-        for (int x = 0; x < kFrameSize; ++x)
-            out[x] = static_cast<std::uint8_t>(std::abs(0.25f * above[x] + 0.5f * centre[x] + 0.25f * below[x]) > t);
+        float* out = difference.row(y);
+        for (int x = 0; x < kFrameSize; ++x) {
+            out[x] = std::abs(0.25f * above[x] + 0.5f * centre[x] + 0.25f * below[x]);
+            ++histogram[static_cast<std::size_t>(std::min(255.0f, out[x]))];
+        }
     }
+    std::swap(difference, smoothed);
+    int seen = 0, median = 0;
+    while (median < 255 && (seen += histogram[static_cast<std::size_t>(median)]) < kFramePixels / 2) ++median;
+    return 1.4826 * (median + 0.5);
+}
+
+void threshold_difference(const Plane<float>& magnitude, double threshold, Mask& mask) {
+    const float t = static_cast<float>(threshold);
+    for (std::size_t i = 0; i < mask.px.size(); ++i) mask.px[i] = static_cast<std::uint8_t>(magnitude.px[i] > t);
 }
 
 // 3x3 square structuring element, applied separably (rows, then columns). Outside the frame the
@@ -119,7 +133,7 @@ int find_regions(Mask& mask, FillStack& stack, int min_area_px, std::array<Regio
     return count;
 }
 
-// The largest region (the first on a tie) and the regions within kMergeGapPx of its bounding box.
+// The largest region (the first on a tie) together with the regions close to it: one moving object.
 template <class Region>
 Detection describe_largest(const Region* regions, int described, int count) {
     Detection best;
@@ -128,17 +142,25 @@ Detection describe_largest(const Region* regions, int described, int count) {
     const Region* largest = regions;
     for (int i = 1; i < described; ++i)
         if (regions[i].area > largest->area) largest = &regions[i];
+    // Grow the chosen set from the largest region: any region within kMergeGapPx of the set's
+    // bounding box joins it, until none does (at most `described` rounds).
+    std::array<bool, 64> taken{};
     long area = 0, sum_x = 0, sum_y = 0;
     int x0 = largest->x0, y0 = largest->y0, x1 = largest->x1, y1 = largest->y1;
-    for (int i = 0; i < described; ++i) {
-        const Region& r = regions[i];
-        const bool near = r.x0 <= largest->x1 + kMergeGapPx && r.x1 >= largest->x0 - kMergeGapPx &&
-                          r.y0 <= largest->y1 + kMergeGapPx && r.y1 >= largest->y0 - kMergeGapPx;
-        if (!near) continue;
-        area += r.area;
-        sum_x += r.sum_x;
-        sum_y += r.sum_y;
-        x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0), x1 = std::max(x1, r.x1), y1 = std::max(y1, r.y1);
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (int i = 0; i < described && i < static_cast<int>(taken.size()); ++i) {
+            const Region& r = regions[i];
+            if (taken[static_cast<std::size_t>(i)]) continue;
+            const bool near = r.x0 <= x1 + kMergeGapPx && r.x1 >= x0 - kMergeGapPx && r.y0 <= y1 + kMergeGapPx &&
+                              r.y1 >= y0 - kMergeGapPx;
+            if (!near) continue;
+            taken[static_cast<std::size_t>(i)] = grew = true;
+            area += r.area;
+            sum_x += r.sum_x;
+            sum_y += r.sum_y;
+            x0 = std::min(x0, r.x0), y0 = std::min(y0, r.y0), x1 = std::max(x1, r.x1), y1 = std::max(y1, r.y1);
+        }
     }
     best.area_px = largest->area;
     best.centre = {static_cast<double>(sum_x) / static_cast<double>(area), static_cast<double>(sum_y) / static_cast<double>(area)};
@@ -155,9 +177,8 @@ void MotionDetector::reset(const DetectTunables& tunables) {
     threshold_ = clamp_threshold(tunables.threshold, tunables);
 }
 
-Detection MotionDetector::run_pass(const GreyImage& previous, const GreyImage& current, double threshold,
-                                   int min_area_px) {
-    threshold_difference(previous, current, threshold, difference_, smoothed_difference_, mask_);
+Detection MotionDetector::run_pass(double threshold, int min_area_px) {
+    threshold_difference(smoothed_difference_, threshold, mask_);
     erode(mask_, filter_tmp_, work_);  // opening: removes changes narrower than 3 px
     dilate(work_, filter_tmp_, mask_);
     dilate(mask_, filter_tmp_, work_);  // closing: fills gaps narrower than 3 px
@@ -174,10 +195,12 @@ Detection MotionDetector::detect(const GreyImage& previous, const GreyImage& cur
     const double max_area_px = tunables.max_area_fraction * kFramePixels;
     double highest_noisy = -std::numeric_limits<double>::infinity();
     double lowest_empty = std::numeric_limits<double>::infinity();
-    threshold_ = clamp_threshold(threshold_, tunables);  // the bounds may have changed since the last frame
+    // The threshold kept from the last frame, but never above what this pair's own noise calls for.
+    const double noise = smoothed_difference(previous, current, difference_, smoothed_difference_);
+    threshold_ = clamp_threshold(std::min(threshold_, kNoiseFactor * noise), tunables);
     Detection result;
     for (int pass = 1; pass <= kMaxPasses; ++pass) {
-        result = run_pass(previous, current, threshold_, tunables.min_area_px);
+        result = run_pass(threshold_, tunables.min_area_px);
         result.passes = pass;
         // §4.1: too many small regions or one very large region: the threshold does not suit the noise.
         const bool too_noisy = result.regions > tunables.max_regions || result.area_px > max_area_px;

@@ -49,7 +49,7 @@ private:
     };
 
     // One pass at a fixed threshold: binary difference, opening, closing, regions.
-    Detection run_pass(const GreyImage& previous, const GreyImage& current, double threshold, int min_area_px);
+    Detection run_pass(double threshold, int min_area_px);
 
     Plane<float> difference_, smoothed_difference_;
     std::array<Region, kMaxRegions> regions_{};

@@ -39,13 +39,11 @@ double bounce(double lo, double hi, double distance) {
     return d < span ? lo + d : hi - (d - span);
 }
 
-// Distance travelled by frame t with the speed ramp 2 → 16 px/frame, holding 8 px/frame for 60 frames.
+// Distance travelled by frame t: speed ramps 2 → 8 px/frame over 170 frames, holds 8 for 60 frames,
+// then ramps 8 → 16 px/frame by frame 399.
 double ramp_distance(int t) {
     double d = 0;
-    for (int i = 0; i < t; ++i) {
-        const double u = i / 399.0;
-        d += i >= 170 && i < 230 ? 8.0 : 2.0 + 14.0 * (i < 170 ? u : (i - 60) / 399.0);
-    }
+    for (int i = 0; i < t; ++i) d += i < 170 ? 2.0 + 6.0 * i / 170.0 : i < 230 ? 8.0 : 8.0 + 8.0 * (i - 230) / 169.0;
     return d;
 }
 

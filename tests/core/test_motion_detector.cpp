@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -62,7 +63,19 @@ void add_brightness(GreyImage& image, int offset) {
     for (auto& p : image.px) p = static_cast<std::uint8_t>(std::clamp(p + offset, 0, 255));
 }
 
+// A step change: the square [x, x + side) × [y, y + side) set to `grey`. Smoothing the difference by the
+// 3×3 binomial spreads a step of height h by exactly one pixel (h/4 beside a side, h/16 at a corner), so
+// at a threshold below h/16 every square becomes its own bounding square grown by one pixel.
+void draw_square(GreyImage& image, int x, int y, int side, std::uint8_t grey) {
+    for (int v = y; v < y + side; ++v)
+        for (int u = x; u < x + side; ++u) image.at(u, v) = grey;
+}
+
 double distance(rays::Point p, double x, double y) { return std::hypot(p.x - x, p.y - y); }
+
+// σ of the 3×3-binomial-smoothed difference of two frames with independent pixel noise σ each:
+// the difference has σ·√2, the filter keeps a fraction Σw² ^½ = 0.375 of it.
+double smoothed_noise_sigma(double sigma) { return sigma * std::sqrt(2.0) * 0.375; }
 
 }  // namespace
 
@@ -83,19 +96,45 @@ TEST_CASE("A moving textured disc is found between its two positions", "[motion_
     CHECK(d.regions == 1);
     CHECK(d.x0 <= 48);  // the union of both positions: x in [46, 78]
     CHECK(d.x1 >= 76);
-    CHECK(d.radius_px == Approx(std::sqrt(d.area_px / 3.141592653589793)));
-    CHECK(d.radius_px > 10.0);
+    CHECK(d.radius_px == Approx(0.5 * std::sqrt((d.x1 - d.x0 + 1) * (d.y1 - d.y0 + 1))));
+    CHECK(d.radius_px > 12.0);
     CHECK(d.radius_px < 18.0);
-    CHECK(d.threshold == tunables.threshold);
+    // Mild noise: the threshold starts at 4 noise σ, below the configured one, and one pass suffices.
+    CHECK(d.threshold < tunables.threshold);
+    CHECK(d.threshold >= tunables.threshold_min);
     CHECK(d.passes == 1);
 }
 
-TEST_CASE("A moving uniform disc gives two crescents and the chosen one lies on the disc", "[motion_detector]") {
-    // Only the leading and trailing edges of an untextured object change; after the opening they are
-    // two separate regions of equal size, so the centre lands on one of them, not between positions.
+TEST_CASE("A uniform disc moving by one pixel is found: its thin crescents survive the opening",
+          "[motion_detector]") {
+    // Each crescent is at most one pixel wide, which a bare 3×3 opening would erase; the smoothed
+    // difference widens it to three pixels.
     GreyImage previous = blank(), current = blank();
     draw_uniform_disc(previous, 60, 64, 12, 200);
-    draw_uniform_disc(current, 64, 64, 12, 200);
+    draw_uniform_disc(current, 61, 64, 12, 200);
+    add_noise(previous, 2.0, 22);
+    add_noise(current, 2.0, 23);
+
+    const DetectTunables tunables;
+    MotionDetector detector;
+    const Detection d = detector.detect(previous, current, tunables);
+
+    REQUIRE(d.found);
+    CHECK(distance(d.centre, 60.5, 64.0) < 2.0);
+    CHECK(d.x0 <= 49);  // the outline of both positions: x in [48, 73], y in [52, 76]
+    CHECK(d.x1 >= 72);
+    CHECK(d.y0 <= 53);
+    CHECK(d.y1 >= 75);
+    CHECK(d.area_px < 12 * 12 * 3.14);  // an outline, not the filled disc
+}
+
+TEST_CASE("The two crescents of a moving uniform disc are merged into one object", "[motion_detector]") {
+    // Only the leading and trailing edges of an untextured object change, and after the opening they
+    // are two separate regions; they lie within the merge gap of each other, so the centre is the
+    // disc's, between its two positions, not on one crescent.
+    GreyImage previous = blank(), current = blank();
+    draw_uniform_disc(previous, 60, 64, 12, 200);
+    draw_uniform_disc(current, 62, 64, 12, 200);
     add_noise(previous, 2.0, 3);
     add_noise(current, 2.0, 4);
 
@@ -105,12 +144,14 @@ TEST_CASE("A moving uniform disc gives two crescents and the chosen one lies on 
 
     REQUIRE(d.found);
     CHECK(d.regions == 2);
-    CHECK(d.area_px < 12 * 12 * 3.14 / 2);
-    CHECK(std::abs(d.centre.y - 64.0) < 2.0);
-    CHECK(std::min(distance(d.centre, 60, 64), distance(d.centre, 64, 64)) < 12.0);
+    CHECK(distance(d.centre, 61.0, 64.0) < 3.0);
+    CHECK(d.area_px < 12 * 12 * 3.14 / 2);  // the largest region is one crescent only
+    CHECK(d.x0 <= 49);                        // the box spans both crescents: x in [48, 74]
+    CHECK(d.x1 >= 73);
+    CHECK(d.radius_px > 10.0);
 }
 
-TEST_CASE("Of two moving objects the larger is chosen", "[motion_detector]") {
+TEST_CASE("Of two distant moving objects the larger is chosen", "[motion_detector]") {
     GreyImage previous = blank(), current = blank();
     draw_textured_disc(previous, 96, 90, 8, 11);
     draw_textured_disc(current, 96, 94, 8, 11);
@@ -126,34 +167,111 @@ TEST_CASE("Of two moving objects the larger is chosen", "[motion_detector]") {
     REQUIRE(d.found);
     CHECK(d.regions == 2);
     CHECK(distance(d.centre, 40.0, 40.0) < 3.0);
-    CHECK(d.x1 < 70);
+    CHECK(d.x1 < 70);  // the small object is far away and not merged
+    CHECK(d.y1 < 70);
+}
+
+TEST_CASE("Regions within 6 px of the growing box of the largest are merged and measured exactly",
+          "[motion_detector]") {
+    // Step changes of 180 grey levels; with no noise the threshold falls to threshold_min = 6 < 180/16,
+    // so each square below is measured as its square grown by one pixel (see draw_square).
+    // A: 10×10 drawn at (20, 20): grown x, y in [19, 30], 144 px, centroid (24.5, 24.5) — the largest.
+    // B: 6×6 to the right of A, 64 px grown. C: 6×6 up and right of B, found before B in raster order,
+    // within 6 px of B but not of A: it joins only once B has grown the box. D: far away.
+    const GreyImage previous = blank();
+    GreyImage current = blank();
+    draw_square(current, 20, 20, 10, 200);
+    draw_square(current, 90, 90, 6, 200);  // D
+    const DetectTunables tunables;
+    MotionDetector detector;
+
+    SECTION("B's grown box starts 6 px after A's: A, B and then C are merged") {
+        draw_square(current, 37, 22, 6, 200);  // B grown: x in [36, 43], y in [21, 28]
+        draw_square(current, 50, 14, 6, 200);  // C grown: x in [49, 56], y in [13, 20]
+        const Detection d = detector.detect(previous, current, tunables);
+        REQUIRE(d.found);
+        CHECK(d.threshold == tunables.threshold_min);
+        CHECK(d.regions == 4);
+        CHECK(d.area_px == 144);  // the largest region's own area
+        CHECK(d.centre.x == Approx((144 * 24.5 + 64 * 39.5 + 64 * 52.5) / 272.0));
+        CHECK(d.centre.y == Approx((144 * 24.5 + 64 * 24.5 + 64 * 16.5) / 272.0));
+        CHECK(d.x0 == 19);
+        CHECK(d.y0 == 13);
+        CHECK(d.x1 == 56);
+        CHECK(d.y1 == 30);
+        CHECK(d.radius_px == Approx(0.5 * std::sqrt(38.0 * 18.0)));
+    }
+    SECTION("B's grown box starts 7 px after A's: A stays alone, and so does C") {
+        draw_square(current, 38, 22, 6, 200);  // B grown: x in [37, 44]
+        draw_square(current, 51, 14, 6, 200);  // C grown: x in [50, 57], still 6 px after B
+        const Detection d = detector.detect(previous, current, tunables);
+        REQUIRE(d.found);
+        CHECK(d.regions == 4);
+        CHECK(d.area_px == 144);
+        CHECK(d.centre.x == Approx(24.5));
+        CHECK(d.centre.y == Approx(24.5));
+        CHECK(d.x0 == 19);
+        CHECK(d.y0 == 19);
+        CHECK(d.x1 == 30);
+        CHECK(d.y1 == 30);
+        CHECK(d.radius_px == Approx(6.0));
+    }
 }
 
 TEST_CASE("Frames without motion give no detection and lower the threshold", "[motion_detector]") {
     const DetectTunables tunables;
     MotionDetector detector;
 
-    SECTION("identical frames") {
+    SECTION("identical frames: no noise, so the threshold drops to its lower bound at once") {
         GreyImage frame = blank();
         draw_textured_disc(frame, 64, 64, 20, 3);
         add_noise(frame, 2.0, 7);
         const Detection d = detector.detect(frame, frame, tunables);
         CHECK_FALSE(d.found);
         CHECK(d.regions == 0);
-        CHECK(d.passes > 1);
-        CHECK(detector.threshold() < tunables.threshold);
-        CHECK(detector.threshold() >= tunables.threshold_min);
+        CHECK(d.passes == 1);  // started at threshold_min, where lowering cannot go further
+        CHECK(d.threshold == tunables.threshold_min);
+        CHECK(detector.threshold() == tunables.threshold_min);
     }
-    SECTION("a static scene with independent mild noise in each frame") {
+    SECTION("a static scene with independent noise in each frame") {
         GreyImage previous = blank(), current = blank();
         draw_textured_disc(previous, 64, 64, 20, 3);
         draw_textured_disc(current, 64, 64, 20, 3);
-        add_noise(previous, 2.0, 8);
-        add_noise(current, 2.0, 9);
-        for (int frame = 0; frame < 3; ++frame) CHECK_FALSE(detector.detect(previous, current, tunables).found);
+        add_noise(previous, 4.0, 8);
+        add_noise(current, 4.0, 9);
+        const Detection first = detector.detect(previous, current, tunables);
+        CHECK_FALSE(first.found);
+        CHECK(first.regions == 0);
+        CHECK(first.passes > 1);  // started at 4 noise σ, above the bound, then lowered
         CHECK(detector.threshold() == tunables.threshold_min);
-        CHECK(detector.detect(previous, current, tunables).passes == 1);  // pinned at the bound: one pass
+        const Detection again = detector.detect(previous, current, tunables);
+        CHECK_FALSE(again.found);
+        CHECK(again.passes == 1);  // pinned at the bound: one pass
     }
+}
+
+TEST_CASE("The threshold starts at 4 noise sigma when that is below the remembered one", "[motion_detector]") {
+    DetectTunables tunables;
+    tunables.threshold = 100.0;
+    MotionDetector detector;
+    detector.reset(tunables);
+    REQUIRE(detector.threshold() == 100.0);
+
+    const double sigma = 8.0;
+    GreyImage previous = blank(), current = blank();
+    draw_textured_disc(previous, 60, 64, 14, 7);
+    draw_textured_disc(current, 64, 64, 14, 7);
+    add_noise(previous, sigma, 31);
+    add_noise(current, sigma, 32);
+    const Detection d = detector.detect(previous, current, tunables);
+
+    REQUIRE(d.found);
+    CHECK(d.passes == 1);  // a threshold of 100 would have missed most of the object and needed lowering
+    const double expected = 4.0 * smoothed_noise_sigma(sigma);  // ≈ 17
+    CHECK(d.threshold > 0.75 * expected);
+    CHECK(d.threshold < 1.3 * expected);
+    CHECK(distance(d.centre, 62.0, 64.0) < 3.0);
+    CHECK(detector.threshold() == d.threshold);
 }
 
 TEST_CASE("Heavy noise at a low initial threshold raises the threshold and still finds the object",
@@ -165,7 +283,7 @@ TEST_CASE("Heavy noise at a low initial threshold raises the threshold and still
     add_noise(current, 25.0, 11);
 
     DetectTunables tunables;
-    tunables.threshold = 8.0;
+    tunables.threshold = 8.0;  // far below 4 noise σ ≈ 53, so the remembered value is where passes start
     MotionDetector detector;
     detector.reset(tunables);
     const Detection d = detector.detect(previous, current, tunables);
@@ -174,7 +292,7 @@ TEST_CASE("Heavy noise at a low initial threshold raises the threshold and still
     CHECK(d.threshold > tunables.threshold);
     REQUIRE(d.found);
     CHECK(d.regions <= tunables.max_regions);
-    CHECK(distance(d.centre, 62.0, 64.0) < 14.0);  // on the object; at this noise the region may fragment
+    CHECK(distance(d.centre, 62.0, 64.0) < 6.0);
     CHECK(detector.threshold() == d.threshold);
 
     // The adapted threshold is kept: the same conditions in the next frame need a single pass.
@@ -182,6 +300,19 @@ TEST_CASE("Heavy noise at a low initial threshold raises the threshold and still
     CHECK(next.found);
     CHECK(next.passes == 1);
     CHECK(next.threshold == d.threshold);
+
+    // When the noise calms down the threshold follows it down at once, to 4 σ of the quiet pair.
+    GreyImage quiet_previous = blank(), quiet_current = blank();
+    draw_textured_disc(quiet_previous, 60, 64, 18, 21);
+    draw_textured_disc(quiet_current, 64, 64, 18, 21);
+    add_noise(quiet_previous, 2.0, 40);
+    add_noise(quiet_current, 2.0, 41);
+    const Detection quiet = detector.detect(quiet_previous, quiet_current, tunables);
+    REQUIRE(quiet.found);
+    CHECK(quiet.passes == 1);
+    CHECK(quiet.threshold < d.threshold);
+    CHECK(quiet.threshold <= std::max(tunables.threshold_min, 4.0 * 1.3 * smoothed_noise_sigma(2.0)));
+    CHECK(distance(quiet.centre, 62.0, 64.0) < 3.0);
 
     detector.reset(tunables);
     CHECK(detector.threshold() == tunables.threshold);
@@ -206,49 +337,74 @@ TEST_CASE("A global brightness change raises the threshold instead of giving one
     CHECK(detector.threshold() <= tunables.threshold_max);
 }
 
-TEST_CASE("The opening removes isolated single-pixel changes and thin scratches", "[motion_detector]") {
+TEST_CASE("Isolated single-pixel changes are not found", "[motion_detector]") {
     DetectTunables tunables;
-    tunables.min_area_px = 1;    // so that only the opening can remove them
-    tunables.max_regions = 100;  // and not the "too many regions" rule
     GreyImage previous = blank();
     add_noise(previous, 2.0, 14);
+    std::mt19937 rng(15);
+    std::uniform_int_distribution<int> coordinate(3, kFrameSize - 4);
+    // 30 flips at least 7 px apart and 3 px inside the frame, so neither the 3x3 smoothing nor the
+    // closing (whose element is clipped at the frame border) joins or grows their spots.
+    std::array<std::array<int, 2>, 30> flips{};
+    for (auto& flip : flips) {
+        bool apart = false;
+        while (!apart) {
+            flip = {coordinate(rng), coordinate(rng)};
+            apart = std::none_of(flips.data(), &flip, [&](const std::array<int, 2>& other) {
+                return std::abs(other[0] - flip[0]) < 7 && std::abs(other[1] - flip[1]) < 7;
+            });
+        }
+    }
     GreyImage current = previous;
-
-    SECTION("30 random single-pixel flips") {
-        std::mt19937 rng(15);
-        std::uniform_int_distribution<int> coordinate(0, kFrameSize - 1);
-        for (int i = 0; i < 30; ++i) current.at(coordinate(rng), coordinate(rng)) = 255;
-    }
-    SECTION("a two-pixel-wide scratch") {
-        for (int x = 20; x < 100; ++x) current.at(x, 50) = current.at(x, 51) = 255;
-    }
     MotionDetector detector;
-    detector.reset(tunables);
-    const Detection d = detector.detect(previous, current, tunables);
-    CHECK_FALSE(d.found);
-    CHECK(d.regions == 0);
+
+    SECTION("moderate flips: their smoothed spots are plus-shaped and the opening removes them") {
+        tunables.min_area_px = 1;    // so that only the opening can remove them
+        tunables.max_regions = 100;  // and not the "too many regions" rule
+        for (const auto& flip : flips) {
+            std::uint8_t& grey = current.at(flip[0], flip[1]);
+            grey = static_cast<std::uint8_t>(grey + 60);
+        }
+        const Detection d = detector.detect(previous, current, tunables);
+        CHECK_FALSE(d.found);
+        CHECK(d.regions == 0);
+    }
+    SECTION("saturated flips: 3x3 spots that pass the opening but are smaller than min_area_px") {
+        for (const auto& flip : flips) current.at(flip[0], flip[1]) = 255;
+        const Detection d = detector.detect(previous, current, tunables);
+        CHECK_FALSE(d.found);
+        CHECK(d.regions == 0);
+        tunables.min_area_px = 1;
+        tunables.max_regions = 100;
+        const Detection spots = detector.detect(previous, current, tunables);
+        CHECK(spots.regions == 30);
+        CHECK(spots.area_px == 9);
+    }
 }
 
 TEST_CASE("Regions are 8-connected and measured exactly", "[motion_detector]") {
-    // Two 6x6 squares meeting only at a corner: the opening keeps them, the closing does not join them
-    // any further, and 8-connectivity makes them one region.
+    // Two 6x6 step squares meeting only at a corner, at (30, 30) and (36, 36). Each is measured grown by
+    // one pixel (see draw_square): 8x8 squares over [29, 36] and [35, 42] sharing a 2x2 corner, one
+    // 8-connected region of 64 + 64 - 4 px; the closing fills no notch of that shape.
     const GreyImage previous = blank();
     GreyImage current = blank();
-    for (int y = 30; y < 36; ++y)
-        for (int x = 30; x < 36; ++x) current.at(x, y) = current.at(x + 6, y + 6) = 200;
+    draw_square(current, 30, 30, 6, 200);
+    draw_square(current, 36, 36, 6, 200);
 
     const DetectTunables tunables;
     MotionDetector detector;
     const Detection d = detector.detect(previous, current, tunables);
     REQUIRE(d.found);
+    CHECK(d.threshold == tunables.threshold_min);
     CHECK(d.regions == 1);
-    CHECK(d.area_px == 72);
+    CHECK(d.area_px == 124);
     CHECK(d.centre.x == Approx(35.5));
     CHECK(d.centre.y == Approx(35.5));
-    CHECK(d.x0 == 30);
-    CHECK(d.y0 == 30);
-    CHECK(d.x1 == 41);
-    CHECK(d.y1 == 41);
+    CHECK(d.x0 == 29);
+    CHECK(d.y0 == 29);
+    CHECK(d.x1 == 42);
+    CHECK(d.y1 == 42);
+    CHECK(d.radius_px == Approx(7.0));
 }
 
 TEST_CASE("An object at the frame border is found", "[motion_detector]") {

@@ -1,0 +1,116 @@
+// rays-replay end to end: a generated sequence in, JSON Lines and overlays out, errors as one line.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "scenes/scene.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int run(const std::string& command) { return WEXITSTATUS(std::system((command + " 2>" + (fs::temp_directory_path() / "rays-replay-err").string()).c_str())); }
+
+std::string last_error() {
+    std::ifstream in(fs::temp_directory_path() / "rays-replay-err");
+    std::string line;
+    std::getline(in, line);
+    return line;
+}
+
+fs::path temp_dir(const char* name) {
+    const fs::path dir = fs::temp_directory_path() / (std::string("rays-test-") + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+}  // namespace
+
+TEST_CASE("rays-replay tracks a generated sequence and writes the documented records", "[tools]") {
+    const fs::path dir = temp_dir("replay");
+    REQUIRE(run(std::string(RAYS_SCENE) + " --scene star --frames 60 --out " + (dir / "star.y4m").string()) == 0);
+    REQUIRE(run(std::string(RAYS_REPLAY) + " --input " + (dir / "star.y4m").string() + " --out " + (dir / "run.jsonl").string() +
+                " --overlay " + (dir / "ov").string() + " --crossings") == 0);
+    std::ifstream in(dir / "run.jsonl");
+    std::string line;
+    REQUIRE(std::getline(in, line));
+    const auto header = nlohmann::json::parse(line);
+    CHECK(header["source"]["width"] == 128);
+    CHECK(header["proc"]["width"] == 128);
+    CHECK(header["scale"][0] == 1.0);
+    CHECK(header["offset"][0] == 0.0);
+    CHECK(header["config"].contains("rays.alpha"));
+    auto scene = rays::scenes::make_scene("star");
+    rays::scenes::SceneFrame truth;
+    int frames = 0, tracking = 0;
+    double iou = 0;
+    while (std::getline(in, line)) {
+        const auto o = nlohmann::json::parse(line);
+        CHECK(o["frame"] == frames);
+        if (o["state"] == "tracking") {
+            ++tracking;
+            std::vector<rays::Point> polygon;
+            for (const auto& p : o["contour"]) polygon.push_back({p[0], p[1]});
+            CHECK(o["rays"] == polygon.size());
+            CHECK(o["ref"].is_array());
+            scene->render(frames, truth);
+            iou += rays::scenes::polygon_mask_iou(polygon, truth.mask);
+        } else {
+            CHECK(o["ref"].is_null());
+            CHECK(o["contour"].empty());
+        }
+        ++frames;
+    }
+    CHECK(frames == 60);
+    CHECK(tracking >= 55);
+    CHECK(iou / tracking > 0.9);
+    CHECK(fs::exists(dir / "ov" / "frame_00030.png"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("rays-replay maps a cropped, non-square source as documented", "[tools]") {
+    const fs::path dir = temp_dir("crop");
+    {
+        std::ofstream y4m(dir / "wide.y4m", std::ios::binary);
+        y4m << "YUV4MPEG2 W320 H200 F25:1 Ip A1:1 Cmono\n";
+        const std::vector<char> frame(320 * 200, 90);
+        for (int i = 0; i < 3; ++i) y4m << "FRAME\n", y4m.write(frame.data(), static_cast<std::streamsize>(frame.size()));
+    }
+    REQUIRE(run(std::string(RAYS_REPLAY) + " --input " + (dir / "wide.y4m").string() + " --crop 20,10,256,160 --out " +
+                (dir / "run.jsonl").string()) == 0);
+    std::ifstream in(dir / "run.jsonl");
+    std::string line;
+    std::getline(in, line);
+    const auto header = nlohmann::json::parse(line);
+    CHECK(header["scale"][0] == Approx(2.0));
+    CHECK(header["scale"][1] == Approx(1.25));
+    CHECK(header["offset"][0] == Approx(20 + 0.5));
+    CHECK(header["offset"][1] == Approx(10 + 0.125));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("rays-replay refuses bad input with one line and a non-zero exit", "[tools]") {
+    const fs::path dir = temp_dir("bad");
+    CHECK(run(std::string(RAYS_REPLAY) + " --input " + (dir / "missing.y4m").string() + " --out /dev/null") != 0);
+    CHECK(last_error().rfind("rays-replay: ", 0) == 0);
+    {
+        std::ofstream y4m(dir / "short.y4m", std::ios::binary);
+        y4m << "YUV4MPEG2 W128 H128 F25:1 Cmono\nFRAME\n" << std::string(1000, 'x');
+    }
+    CHECK(run(std::string(RAYS_REPLAY) + " --input " + (dir / "short.y4m").string() + " --out /dev/null") == 1);
+    CHECK(last_error().find("truncated") != std::string::npos);
+    {
+        std::ofstream y4m(dir / "bad.y4m", std::ios::binary);
+        y4m << "NOTY4M W128\n";
+    }
+    CHECK(run(std::string(RAYS_REPLAY) + " --input " + (dir / "bad.y4m").string() + " --out /dev/null") == 1);
+    CHECK(run(std::string(RAYS_REPLAY) + " --input x --init 500,3") == 2);
+    CHECK(run(std::string(RAYS_REPLAY) + " --input x --crop 1,2,3") == 2);
+    fs::remove_all(dir);
+}

@@ -1,0 +1,58 @@
+// The tracker's contour quality on the generated scenes (the acceptance figures), measured
+// against the scenes' own ground-truth masks. Frames not in the tracking state score 0.
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cstdio>
+
+#include "core/tracker.hpp"
+#include "scenes/scene.hpp"
+
+using namespace rays;
+
+namespace {
+
+struct Score {
+    double mean_iou = 0;
+    int losses = 0;
+    int tracking = 0;
+};
+
+Score run_scene(const char* name, int lost_check_from = -1, int lost_check_to = -1, int* losses_in_window = nullptr) {
+    auto scene = scenes::make_scene(name);
+    SteadyClock clock;
+    Tracker tracker(TrackerConfig{}, clock);
+    scenes::SceneFrame f;
+    Score s;
+    double sum = 0;
+    for (int i = 0; i < scene->frame_count(); ++i) {
+        scene->render(i, f);
+        const FrameResult& r = tracker.process(f.image, TimePoint::max());
+        if (r.state == TrackState::Lost) {
+            ++s.losses;
+            if (losses_in_window && i >= lost_check_from && i < lost_check_to) ++*losses_in_window;
+        }
+        if (!r.has_contour) continue;
+        ++s.tracking;
+        std::vector<Point> polygon(tracker.contour().size);
+        for (int k = 0; k < tracker.contour().size; ++k) polygon[k] = tracker.contour().points[k].p;
+        sum += scenes::polygon_mask_iou(polygon, f.mask);
+    }
+    s.mean_iou = sum / scene->frame_count();
+    std::printf("%-14s mean IoU %.3f, %d tracking frames of %d, %d losses\n", name, s.mean_iou, s.tracking,
+                scene->frame_count(), s.losses);
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("Easy scenes: mean IoU at least 0.85", "[quality]") {
+    CHECK(run_scene("clutter").mean_iou >= 0.85);
+    CHECK(run_scene("star").mean_iou >= 0.85);
+    CHECK(run_scene("noise-blur").mean_iou >= 0.85);
+}
+
+TEST_CASE("Hard scenes that the tracker handles: mean IoU at least 0.6", "[quality]") {
+    CHECK(run_scene("shadow").mean_iou >= 0.6);
+    CHECK(run_scene("occluder").mean_iou >= 0.6);
+    CHECK(run_scene("speed-ramp").mean_iou >= 0.6);
+}

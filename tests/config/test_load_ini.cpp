@@ -56,7 +56,7 @@ TEST_CASE("a file setting every section parses", "[config][ini]") {
     CHECK(config.tunables.rays.hypotheses == 5);
     CHECK(config.tunables.rays.alpha == 0.05);
     CHECK(config.tunables.rays.lambda_max_px == 70.0);
-    CHECK(config.tunables.rays.beta == 0.002);
+    CHECK(config.tunables.rays.beta == rays::RaysTunables{}.beta);  // absent keys keep the default
     CHECK(config.tunables.detect.threshold == 25.5);  // the marked 33 is replaced
     CHECK(config.tunables.detect.min_area_px == 20);
     CHECK(config.tunables.attention.lost_frames == 3);

@@ -1,0 +1,148 @@
+// The tracking state machine (§4.1) on the generated scenes: detection, tracking, loss, recovery.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <vector>
+
+#include "core/tracker.hpp"
+#include "scenes/scene.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using rays::Point;
+using rays::SteadyClock;
+using rays::Tracker;
+using rays::TrackerConfig;
+using rays::TrackState;
+using rays::scenes::Scene;
+using rays::scenes::SceneFrame;
+
+std::unique_ptr<Scene> scene(const char* name) {
+    auto s = rays::scenes::make_scene(name);
+    REQUIRE(s != nullptr);
+    return s;
+}
+
+// A tracker with a generous deadline per frame, and the scene frame it saw last.
+struct Run {
+    SteadyClock clock;
+    TrackerConfig config;
+    std::unique_ptr<Tracker> tracker = std::make_unique<Tracker>(config, clock);
+    std::unique_ptr<SceneFrame> frame = std::make_unique<SceneFrame>();
+
+    TrackState step(const Scene& s, int index) {
+        s.render(index, *frame);
+        return tracker->process(frame->image, clock.now() + 50ms).state;
+    }
+
+    double iou() const {
+        const rays::Contour& c = tracker->contour();
+        std::vector<Point> p(static_cast<std::size_t>(c.size));
+        for (int i = 0; i < c.size; ++i) p[static_cast<std::size_t>(i)] = c.points[static_cast<std::size_t>(i)].p;
+        return rays::scenes::polygon_mask_iou(p, frame->mask);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("Tracker detects the moving disc and then tracks it", "[tracker]") {
+    const auto s = scene("disc");
+    Run run;
+    CHECK(run.tracker->state() == TrackState::Detecting);
+    int first_tracking = -1;
+    for (int i = 0; i < 5 && first_tracking < 0; ++i)
+        if (run.step(*s, i) == TrackState::Tracking) first_tracking = i;
+    REQUIRE(first_tracking >= 1);  // the detector needs a frame pair
+    CHECK(run.tracker->result().has_contour);
+    double worst = 1.0;
+    for (int i = first_tracking + 1; i < first_tracking + 80; ++i) {
+        INFO("frame " << i);
+        REQUIRE(run.step(*s, i) == TrackState::Tracking);
+        worst = std::min(worst, run.iou());
+    }
+    INFO("tracking from frame " << first_tracking << ", worst IoU " << worst);
+    CHECK(worst >= 0.85);
+    CHECK(run.tracker->contour().size == run.tracker->tunables().rays.count);
+}
+
+TEST_CASE("Tracker start_at replaces detection on the next frame", "[tracker]") {
+    const auto s = scene("disc");
+    Run run;
+    run.tracker->start_at(s->init());
+    CHECK(run.step(*s, 0) == TrackState::Tracking);  // the very first frame: no frame pair needed
+    CHECK(run.iou() >= 0.85);
+    CHECK(run.step(*s, 1) == TrackState::Tracking);
+    CHECK(run.iou() >= 0.85);
+
+    run.tracker->release();
+    CHECK(run.tracker->state() == TrackState::Detecting);
+    CHECK_FALSE(run.tracker->result().has_contour);
+}
+
+TEST_CASE("Tracker declares the target lost when it vanishes and finds it again", "[tracker]") {
+    // "vanish": the disc is visible in frames 0–59, gone in 60–99, back elsewhere from frame 100.
+    const auto s = scene("vanish");
+    Run run;
+    int i = 0;
+    while (i < 10 && run.step(*s, i) != TrackState::Tracking) ++i;
+    REQUIRE(i < 10);
+    for (++i; i < 60; ++i) {
+        INFO("frame " << i);
+        REQUIRE(run.step(*s, i) == TrackState::Tracking);
+    }
+    int lost_at = -1;
+    for (; i < 100 && lost_at < 0; ++i)
+        if (run.step(*s, i) == TrackState::Lost) lost_at = i;
+    INFO("lost at frame " << lost_at);
+    REQUIRE(lost_at >= 60);
+    CHECK(lost_at <= 63);
+    CHECK(run.tracker->result().lost_reason != nullptr);
+    CHECK_FALSE(run.tracker->result().has_contour);
+    CHECK(run.step(*s, i++) == TrackState::Detecting);  // attention.lost_frames = 1
+    for (; i < 100; ++i) {
+        INFO("frame " << i << ", nothing to see");
+        CHECK(run.step(*s, i) != TrackState::Tracking);
+    }
+    int found_at = -1;
+    for (; i < 110 && found_at < 0; ++i)
+        if (run.step(*s, i) == TrackState::Tracking) found_at = i;
+    INFO("tracking again at frame " << found_at);
+    REQUIRE(found_at >= 100);
+    CHECK(found_at <= 105);
+    double worst = 1.0;
+    for (int end = i + 20; i < end; ++i) {
+        INFO("frame " << i);
+        REQUIRE(run.step(*s, i) == TrackState::Tracking);
+        worst = std::min(worst, run.iou());
+    }
+    INFO("worst IoU after recovery " << worst);
+    CHECK(worst >= 0.85);
+}
+
+TEST_CASE("Tracker tunables change only within the capacities", "[tracker]") {
+    const auto s = scene("disc");
+    Run run;
+    const rays::TrackerTunables before = run.tracker->tunables();
+
+    rays::TrackerTunables too_many = before;
+    too_many.rays.count = run.tracker->capacity().max_rays + 1;
+    too_many.rays.alpha = 0.5;
+    CHECK_FALSE(run.tracker->set_tunables(too_many));
+    CHECK(run.tracker->tunables().rays.count == before.rays.count);
+    CHECK(run.tracker->tunables().rays.alpha == before.rays.alpha);
+    CHECK(run.tracker->rays().table().count() == before.rays.count);
+
+    rays::TrackerTunables fewer = before;
+    fewer.rays.count = 180;
+    fewer.rays.alpha = 0.05;
+    CHECK(run.tracker->set_tunables(fewer));
+    CHECK(run.tracker->tunables().rays.count == 180);
+    CHECK(run.tracker->tunables().rays.alpha == 0.05);
+    run.tracker->start_at(s->init());
+    REQUIRE(run.step(*s, 0) == TrackState::Tracking);
+    CHECK(run.tracker->contour().size == 180);
+    CHECK(run.iou() >= 0.85);
+}

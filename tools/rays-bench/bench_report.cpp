@@ -38,10 +38,10 @@ void print_report(std::FILE* out, const BenchSetup& setup, const std::vector<Tim
     std::fprintf(out, "(IoU: mean over all frames, 0 where not tracking; rays: mean over tracking frames)\n");
 }
 
-nlohmann::json report_json(const BenchSetup& setup, const std::vector<TimingRow>& rows,
+nlohmann::ordered_json report_json(const BenchSetup& setup, const std::vector<TimingRow>& rows,
                            const std::vector<AnytimePoint>& curve) {
     const RaysTunables& r = setup.config.tunables.rays;
-    nlohmann::json config = {
+    nlohmann::ordered_json config = {
         {"config_file", setup.config_source},
         {"scene", setup.scene},
         {"frames", setup.images.size()},
@@ -57,9 +57,9 @@ nlohmann::json report_json(const BenchSetup& setup, const std::vector<TimingRow>
         {"note", kTimingNote},
         {"settings", config::to_json(setup.config)},
     };
-    nlohmann::json json_rows = nlohmann::json::array();
+    nlohmann::ordered_json json_rows = nlohmann::ordered_json::array();
     for (const TimingRow& row : rows) {
-        auto time_or_null = [&](double v) { return row.frames == 0 ? nlohmann::json(nullptr) : nlohmann::json(v); };
+        auto time_or_null = [&](double v) { return row.frames == 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(v); };
         json_rows.push_back({{"dphi", row.dphi},
                              {"rays", row.rays},
                              {"median_us", time_or_null(row.median_us)},
@@ -69,7 +69,7 @@ nlohmann::json report_json(const BenchSetup& setup, const std::vector<TimingRow>
                              {"frames", row.frames},
                              {"paper_ms", row.paper_ms}});
     }
-    nlohmann::json anytime = nlohmann::json::array();
+    nlohmann::ordered_json anytime = nlohmann::ordered_json::array();
     for (const AnytimePoint& p : curve)
         anytime.push_back({{"budget_us", p.budget_us}, {"iou", p.iou}, {"rays", p.rays}, {"tracking", p.tracking}});
     return {{"config", config}, {"rows", json_rows}, {"anytime", anytime}};

@@ -14,7 +14,7 @@ void print_report(std::FILE* out, const BenchSetup& setup, const std::vector<Tim
                   const std::vector<AnytimePoint>& curve);
 
 // {"config":{...},"rows":[...],"anytime":[...]}
-nlohmann::json report_json(const BenchSetup& setup, const std::vector<TimingRow>& rows,
+nlohmann::ordered_json report_json(const BenchSetup& setup, const std::vector<TimingRow>& rows,
                            const std::vector<AnytimePoint>& curve);
 
 }  // namespace rays::bench

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -161,13 +162,53 @@ TEST_CASE("ActiveRays moves m to the centroid from an off-centre start", "[activ
     }
 }
 
-TEST_CASE("ActiveRays extracts a concave star", "[active_rays]") {
+namespace {
+
+// True when both target and background pixels lie within 2 px of the point λ along the ray from ref.
+bool near_mask_boundary(const SceneFrame& frame, Point ref, double phi, double lambda) {
+    const double px = ref.x + lambda * std::cos(phi), py = ref.y + lambda * std::sin(phi);
+    bool inside = false, outside = false;
+    for (int y = static_cast<int>(py) - 2; y <= static_cast<int>(py) + 3; ++y)
+        for (int x = static_cast<int>(px) - 2; x <= static_cast<int>(px) + 3; ++x) {
+            if (x < 0 || y < 0 || x >= rays::kFrameSize || y >= rays::kFrameSize) continue;
+            if (std::hypot(x - px, y - py) > 2.0) continue;
+            (frame.mask.at(x, y) > 127 ? inside : outside) = true;
+        }
+    return inside && outside;
+}
+
+}  // namespace
+
+TEST_CASE("ActiveRays extracts a concave star and reports further crossings in its notches", "[active_rays]") {
     auto frame = draw(Star{kCx, kCy, 24, 12, 5, 0.0}, 60, 140, 4, 12);
     Extraction x;
-    const Contour& c = x.run(*frame, {kCx, kCy});
-    INFO("IoU " << iou(c, *frame));
-    CHECK(iou(c, *frame) >= 0.8);
-    CHECK(centroid_error(c, *frame) < 1.0);
+    SECTION("from the centre every ray meets the rim once") {
+        const Contour& c = x.run(*frame, {kCx, kCy});
+        INFO("IoU " << iou(c, *frame));
+        CHECK(iou(c, *frame) >= 0.8);
+        CHECK(centroid_error(c, *frame) < 1.0);
+        int crossings = 0;
+        for (int i = 0; i < c.size; ++i) crossings += c.crossing_count[static_cast<std::size_t>(i)];
+        CHECK(crossings == 0);
+    }
+    SECTION("from a point 6 px off-centre, rays through the notches meet the rim three times") {
+        RaysTunables t;
+        t.centroid_iterations = 1;  // keep m where it is
+        x.set(t);
+        const Contour& c = x.run(*frame, {kCx + 6, kCy});
+        int rays_with_crossings = 0;
+        for (int i = 0; i < c.size; ++i) {
+            const rays::ContourPoint& p = c.points[static_cast<std::size_t>(i)];
+            for (int k = 0; k < c.crossing_count[static_cast<std::size_t>(i)]; ++k) {
+                INFO("ray at " << p.phi << " rad, crossing at λ = " << c.crossing(i, k));
+                CHECK(near_mask_boundary(*frame, c.ref, p.phi, c.crossing(i, k)));
+            }
+            rays_with_crossings += c.crossing_count[static_cast<std::size_t>(i)] > 0;
+        }
+        INFO("IoU " << iou(c, *frame) << ", rays with further crossings " << rays_with_crossings);
+        CHECK(iou(c, *frame) >= 0.8);
+        CHECK(rays_with_crossings >= 10);
+    }
 }
 
 TEST_CASE("ActiveRays works with a ray count that is not a power of two", "[active_rays]") {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 namespace rays::scenes {
 namespace {
@@ -12,6 +14,21 @@ double hash01(std::int64_t x, std::int64_t y, std::uint64_t seed) {
 }
 
 double smooth(double t) { return t * t * (3 - 2 * t); }
+
+// One pass of a normalised 1-D kernel along rows (dx = 1) or columns (dx = 0), edges clamped.
+void convolve(const Plane<float>& in, Plane<float>& out, const std::vector<float>& kernel, bool along_x) {
+    const int radius = static_cast<int>(kernel.size() / 2);
+    for (int y = 0; y < kFrameSize; ++y)
+        for (int x = 0; x < kFrameSize; ++x) {
+            float sum = 0;
+            for (int k = -radius; k <= radius; ++k) {
+                const int sx = along_x ? std::clamp(x + k, 0, kFrameSize - 1) : x;
+                const int sy = along_x ? y : std::clamp(y + k, 0, kFrameSize - 1);
+                sum += kernel[static_cast<std::size_t>(k + radius)] * in.at(sx, sy);
+            }
+            out.at(x, y) = sum;
+        }
+}
 
 }  // namespace
 
@@ -24,9 +41,10 @@ std::uint64_t Random::next() {
 
 double Random::uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
+// Box–Muller.
 double Random::gaussian() {
     const double u = std::max(uniform(), 1e-12), v = uniform();
-    return std::sqrt(-2.0 * std::log(u)) * std::cos(6.283185307179586 * v);
+    return std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * std::numbers::pi * v);
 }
 
 void Canvas::fill(double grey) {
@@ -34,6 +52,15 @@ void Canvas::fill(double grey) {
     coverage_.px.fill(0.0f);
 }
 
+void Canvas::gradient(double grey_at_centre, double per_px_x, double per_px_y) {
+    const double centre = (kFrameSize - 1) / 2.0;
+    for (int y = 0; y < kFrameSize; ++y)
+        for (int x = 0; x < kFrameSize; ++x)
+            grey_.at(x, y) = static_cast<float>(grey_at_centre + per_px_x * (x - centre) + per_px_y * (y - centre));
+    coverage_.px.fill(0.0f);
+}
+
+// Three octaves of value noise: random values on a grid of `cell_px`, smoothly interpolated.
 void Canvas::texture(double mean, double amplitude, double cell_px, std::uint64_t seed) {
     coverage_.px.fill(0.0f);
     for (int y = 0; y < kFrameSize; ++y)
@@ -54,10 +81,29 @@ void Canvas::texture(double mean, double amplitude, double cell_px, std::uint64_
         }
 }
 
-void Canvas::rect(double x0, double y0, double x1, double y1, double grey) {
-    paint(Box{x0, y0, x1, y1}, grey, false);
+void Canvas::rect(double x0, double y0, double x1, double y1, double grey) { paint(Box{x0, y0, x1, y1}, grey, false); }
+
+void Canvas::line(double x0, double y0, double x1, double y1, double width_px, double grey) {
+    paint(Capsule{x0, y0, x1, y1, width_px / 2}, grey, false);
 }
 
+void Canvas::clutter(int count, double grey_lo, double grey_hi, std::uint64_t seed) {
+    Random layout(seed);
+    for (int k = 0; k < count; ++k) {
+        const double x = layout.uniform() * kFrameSize, y = layout.uniform() * kFrameSize;
+        const double grey = grey_lo + layout.uniform() * (grey_hi - grey_lo);
+        if (k % 3 == 0) {  // a long straight line at any angle
+            const double angle = layout.uniform() * std::numbers::pi, half = 20 + layout.uniform() * 40;
+            const double dx = half * std::cos(angle), dy = half * std::sin(angle);
+            line(x - dx, y - dy, x + dx, y + dy, 1.5 + layout.uniform() * 2, grey);
+        } else {
+            const double w = 6 + layout.uniform() * 28, h = 6 + layout.uniform() * 28;
+            rect(x - w / 2, y - h / 2, x + w / 2, y + h / 2, grey);
+        }
+    }
+}
+
+// Coverage by 4×4 supersampling of shape.inside() over the shape's bounding box only.
 template <class Shape>
 void Canvas::paint(const Shape& shape, double grey, bool target) {
     const Box b = shape.box();
@@ -75,37 +121,40 @@ void Canvas::paint(const Shape& shape, double grey, bool target) {
         }
 }
 
+template void Canvas::paint<Box>(const Box&, double, bool);
+template void Canvas::paint<Disc>(const Disc&, double, bool);
 template void Canvas::paint<Ellipse>(const Ellipse&, double, bool);
+template void Canvas::paint<Capsule>(const Capsule&, double, bool);
 template void Canvas::paint<Star>(const Star&, double, bool);
 template void Canvas::paint<Walker>(const Walker&, double, bool);
+
+void Canvas::occlude(double x0, double y0, double x1, double y1, double grey) { paint(Box{x0, y0, x1, y1}, grey, false); }
 
 void Canvas::multiply_half_plane(double nx, double ny, double offset, double factor) {
     for (int y = 0; y < kFrameSize; ++y)
         for (int x = 0; x < kFrameSize; ++x) {
-            // Soft over one pixel, like a real shadow border.
             const double s = std::clamp(nx * x + ny * y - offset + 0.5, 0.0, 1.0);
             grey_.at(x, y) *= static_cast<float>(1.0 + s * (factor - 1.0));
         }
 }
 
-void Canvas::occlude(double x0, double y0, double x1, double y1, double grey) { paint(Box{x0, y0, x1, y1}, grey, false); }
+void Canvas::gaussian_blur(double sigma_px) {
+    const int radius = static_cast<int>(std::ceil(3 * sigma_px));
+    std::vector<float> kernel(static_cast<std::size_t>(2 * radius + 1));
+    double total = 0;
+    for (int k = -radius; k <= radius; ++k) total += std::exp(-0.5 * k * k / (sigma_px * sigma_px));
+    for (int k = -radius; k <= radius; ++k)
+        kernel[static_cast<std::size_t>(k + radius)] = static_cast<float>(std::exp(-0.5 * k * k / (sigma_px * sigma_px)) / total);
+    Plane<float> rows;
+    convolve(grey_, rows, kernel, true);
+    convolve(rows, grey_, kernel, false);
+}
 
 void Canvas::noise(double sigma, Random& random) {
     for (float& v : grey_.px) v += static_cast<float>(sigma * random.gaussian());
 }
 
-void Canvas::blur3() {
-    Plane<float> tmp = grey_;
-    for (int y = 0; y < kFrameSize; ++y)
-        for (int x = 0; x < kFrameSize; ++x) {
-            float sum = 0;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                    sum += tmp.at(std::clamp(x + dx, 0, kFrameSize - 1), std::clamp(y + dy, 0, kFrameSize - 1));
-            grey_.at(x, y) = sum / 9.0f;
-        }
-}
-
+// The mask is coverage ≥ 0.5; the truth is that mask's pixel centroid and pixel count.
 void Canvas::finish(SceneFrame& out) const {
     double area = 0, sx = 0, sy = 0;
     for (int y = 0; y < kFrameSize; ++y)

@@ -1,5 +1,5 @@
-// Drawing helpers for the scenes: a float canvas with the target mask, textures, anti-aliased
-// shapes, noise and blur, all deterministic.
+// Drawing for the scenes: a float canvas with the target's coverage, textures, clutter,
+// anti-aliased shapes, lighting, blur and noise, all deterministic.
 #pragma once
 #include <cstdint>
 
@@ -22,18 +22,32 @@ private:
 
 class Canvas {
 public:
+    // Backgrounds; each also clears the target.
+    void fill(double grey);
+    void gradient(double grey_at_centre, double per_px_x, double per_px_y);
     // Smooth value-noise texture of the given mean and amplitude (grey levels), cell size px.
     void texture(double mean, double amplitude, double cell_px, std::uint64_t seed);
-    void fill(double grey);
-    void rect(double x0, double y0, double x1, double y1, double grey);  // background detail
-    // Paints a shape with 4×4 supersampled coverage; marks it as the target when `target`.
+
+    // Background detail, hidden by a target painted later.
+    void rect(double x0, double y0, double x1, double y1, double grey);
+    void line(double x0, double y0, double x1, double y1, double width_px, double grey);
+    // `count` rectangles and straight lines of random size, place and grey in [grey_lo, grey_hi].
+    void clutter(int count, double grey_lo, double grey_hi, std::uint64_t seed);
+
+    // Paints a shape with 4×4 supersampled coverage; it becomes (part of) the target when `target`,
+    // otherwise it hides the target where it covers it (an occluder).
     template <class Shape>
     void paint(const Shape& shape, double grey, bool target);
-    void multiply_half_plane(double nx, double ny, double offset, double factor);  // where nx·x+ny·y > offset
-    void occlude(double x0, double y0, double x1, double y1, double grey);  // hides the target there
+    // An occluding bar in front of everything: the target's mask excludes it.
+    void occlude(double x0, double y0, double x1, double y1, double grey);
+
+    // Lighting over everything drawn so far: grey × factor where nx·x + ny·y > offset (a shadow
+    // border, softened over one pixel).
+    void multiply_half_plane(double nx, double ny, double offset, double factor);
+    void gaussian_blur(double sigma_px);  // optics: blurs the image, not the truth
     void noise(double sigma, Random& random);
-    void blur3();
-    void finish(SceneFrame& out) const;  // quantises and computes the truth from the mask
+
+    void finish(SceneFrame& out) const;  // quantises, and takes mask and truth from the coverage
 
 private:
     Plane<float> grey_{};

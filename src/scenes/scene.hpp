@@ -11,8 +11,8 @@
 namespace rays::scenes {
 
 struct Truth {
-    double cx = 0, cy = 0;  // centroid of the visible mask, pixel centres at integers
-    double area = 0;        // visible pixels
+    double cx = 0, cy = 0;  // centroid of the visible mask, pixel centres at integers; 0 when hidden
+    double area = 0;        // visible pixels (the mask's count); 0 when the target is hidden
 };
 
 struct SceneFrame {
@@ -29,8 +29,8 @@ public:
     virtual int frame_count() const = 0;
     // Deterministic and random access: the same index always gives the same frame.
     virtual void render(int index, SceneFrame& out) const = 0;
-    // The target's centre in frame 0.
-    Point init() const;
+    // The target's centre in frame 0: the truth's centroid there.
+    virtual Point init() const;
 };
 
 std::unique_ptr<Scene> make_scene(std::string_view name);  // nullptr for an unknown name
@@ -39,5 +39,8 @@ std::vector<std::string_view> scene_names();
 // IoU of a polygon (even-odd fill sampled at pixel centres, as ../shared/tools/score-contours.py
 // does) with mask > 127. Fewer than 3 points give 0.
 double polygon_mask_iou(std::span<const Point> polygon, const GreyImage& mask);
+// Centroid of that same raster of the polygon (what the scorer compares with the truth); NaN when
+// the raster is empty.
+Point polygon_centroid_px(std::span<const Point> polygon);
 
 }  // namespace rays::scenes

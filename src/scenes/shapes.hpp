@@ -1,6 +1,6 @@
-// Target shapes as inside-predicates with a bounding box, for anti-aliased drawing.
+// Shapes as inside-predicates with a bounding box, for anti-aliased drawing (see Canvas::paint).
+// Coordinates in px, x right, y down, pixel centres at integers; angles in rad.
 #pragma once
-#include "core/image.hpp"
 
 namespace rays::scenes {
 
@@ -10,13 +10,26 @@ struct Box {
     Box box() const { return *this; }
 };
 
-struct Ellipse {
-    double cx, cy, a, b, angle = 0;  // semi-axes a (along angle) and b, px
+struct Disc {
+    double cx, cy, r;
     bool inside(double x, double y) const;
     Box box() const;
 };
 
-// A five-(or n-)pointed star with rounded points: r(φ) between inner and outer radius (concave).
+struct Ellipse {
+    double cx, cy, a, b, angle = 0;  // semi-axes a (along angle) and b
+    bool inside(double x, double y) const;
+    Box box() const;
+};
+
+// A thick line segment with round ends: the points within half_width of the segment a–b.
+struct Capsule {
+    double ax, ay, bx, by, half_width;
+    bool inside(double x, double y) const;
+    Box box() const;
+};
+
+// An n-pointed star with rounded points (concave): the radius swings between inner and outer.
 struct Star {
     double cx, cy, outer, inner;
     int points = 5;
@@ -25,8 +38,8 @@ struct Star {
     Box box() const;
 };
 
-// A walking human silhouette: head, torso, two legs swinging with `phase`, `height` px tall,
-// (cx, cy) at the middle of the figure.
+// A walking human silhouette `height` px tall with (cx, cy) at the middle of the figure: head,
+// torso, two legs swinging with `phase` (one gait cycle per 2π) and arms swinging against them.
 struct Walker {
     double cx, cy, height, phase;
     bool inside(double x, double y) const;

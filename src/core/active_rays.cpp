@@ -196,11 +196,13 @@ void ActiveRays::write_contour(Point m, Contour& out) const {
         if (c.no_edge) {
             ++none;
             c.grad = c.inside_mean = c.inside_sd = 0;
+            c.outside_mean = -1;
         } else {
             const Hypothesis& h = hyp_[static_cast<std::size_t>(r) * capacity_.max_hypotheses + s];
             c.grad = h.grad;
             c.inside_mean = h.inside_mean;
             c.inside_sd = std::sqrt(std::max(0.0f, h.inside_msq - h.inside_mean * h.inside_mean));
+            c.outside_mean = h.outside_mean;
         }
         // Further crossings (§2.4): strong hypotheses that continue on both neighbouring rays
         // (the matching of eq. 14), e.g. where a ray passes through a concave notch.

@@ -4,6 +4,29 @@
 
 namespace rays {
 
+double contour_objectness(const Contour& contour) {
+    constexpr double kSpreadFloor = 4.0;  // grey
+    double sum = 0.0;
+    int edges = 0;
+    for (int i = 0; i < contour.size; ++i) {
+        const ContourPoint& c = contour.points[i];
+        if (c.no_edge || c.outside_mean < 0) continue;
+        sum += std::abs(c.inside_mean - c.outside_mean) / (c.inside_sd + kSpreadFloor);
+        ++edges;
+    }
+    return contour.size > 0 ? sum / contour.size : 0.0;  // rays without an edge count as 0
+}
+
+bool contour_contains(const Contour& contour, Point p) {
+    bool inside = false;
+    for (int i = 0, j = contour.size - 1; i < contour.size; j = i++) {
+        const Point& a = contour.points[i].p;
+        const Point& b = contour.points[j].p;
+        if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) inside = !inside;
+    }
+    return inside;
+}
+
 void polygon_area_centroid(const ContourPoint* pts, int n, double& area, Point& centroid) {
     double a2 = 0.0, cx = 0.0, cy = 0.0;
     for (int i = 0; i < n; ++i) {

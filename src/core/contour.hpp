@@ -15,6 +15,7 @@ struct ContourPoint {
     float grad = 0;          // dρ/dλ at the chosen edge (0 when no_edge)
     float inside_mean = 0;   // grey mean between ref and the edge (0 when no_edge)
     float inside_sd = 0;     // grey spread there
+    float outside_mean = -1; // grey mean of a short band just outside the edge (< 0: off the image)
 };
 
 struct Contour {
@@ -41,6 +42,14 @@ struct Contour {
 
     float crossing(int ray, int c) const { return crossings[static_cast<std::size_t>(ray) * max_crossings + c]; }
 };
+
+// How much the contour looks like the outline of one object: along its rays the inside differs from
+// the band just outside by more than the inside varies, and few rays lack an edge. Used to choose
+// among start points of a new track.
+double contour_objectness(const Contour& contour);
+
+// Whether p lies inside the contour polygon (even-odd rule).
+bool contour_contains(const Contour& contour, Point p);
 
 // Area and centre of the enclosed area of a closed polygon (shoelace formula).
 void polygon_area_centroid(const ContourPoint* pts, int n, double& area, Point& centroid);

@@ -17,6 +17,26 @@ int TargetModel::bin(float phi) {
     return std::clamp(b, 0, kBins - 1);
 }
 
+void TargetModel::seed(const FloatImage& image, Point m) {
+    constexpr int kHalf = 2;
+    constexpr float kSeedContrast = 12.0f;  // grey/px, as before a rim is learned
+    const int cx = std::clamp(static_cast<int>(std::lround(m.x)), kHalf, kFrameSize - 1 - kHalf);
+    const int cy = std::clamp(static_cast<int>(std::lround(m.y)), kHalf, kFrameSize - 1 - kHalf);
+    float sum = 0, sq = 0;
+    for (int y = cy - kHalf; y <= cy + kHalf; ++y)
+        for (int x = cx - kHalf; x <= cx + kHalf; ++x) {
+            sum += image.at(x, y);
+            sq += image.at(x, y) * image.at(x, y);
+        }
+    constexpr float n = (2 * kHalf + 1) * (2 * kHalf + 1);
+    const float mean = sum / n;
+    polarity.fill(0.0f);
+    inside_mean.fill(mean);
+    inside_spread = std::sqrt(std::max(0.0f, sq / n - mean * mean));
+    rim_contrast = kSeedContrast;
+    valid = true;
+}
+
 void TargetModel::learn(const Contour& contour, std::vector<float>& scratch) {
     std::array<float, kBins> pol{}, mean{}, count{};
     int edges = 0;

@@ -19,6 +19,9 @@ struct TargetModel {
 
     static int bin(float phi);
     void reset() { valid = false; }
+    // A first guess before any contour: the target looks like the image round its start point
+    // (mean grey of a 5×5 patch at m); no polarity yet.
+    void seed(const FloatImage& image, Point m);
     // Learns from a contour; `scratch` holds max_rays floats (no allocation).
     void learn(const Contour& contour, std::vector<float>& scratch);
 };

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace rays {
 namespace {
 
 constexpr double kStartRadiusPx = 10.0;  // least first guess of the contour size at a new target
+constexpr int kStartCandidates = 6;     // start points tried round a detected region's centre
 constexpr double kVelocityRate = 0.7;   // weight of the newest centroid step in the velocity
 
 }  // namespace
@@ -60,13 +62,38 @@ void Tracker::remember_contour() {
     for (int i = 0; i < last_count_; ++i) last_points_[i] = contour_.points[i].p;
 }
 
-bool Tracker::begin_track(Point m, double radius, TimePoint deadline) {
+Point Tracker::best_start(Point centre, double radius, TimePoint deadline) {
+    // Frame differencing often finds only a rim of the object (the crescents a slow, uniform object
+    // leaves), so m may start on the rim. Coarse contours from the region's centre and from points
+    // round it are compared; the most object-like one that still holds the moving region's centre
+    // gives the start.
+    Point best = centre;
+    double best_score = 0.0;
+    const double d = std::max(radius, kStartRadiusPx * 0.6);
+    for (int k = -1; k < kStartCandidates; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / kStartCandidates;
+        const Point m = k < 0 ? centre : Point{centre.x + d * std::cos(a), centre.y + d * std::sin(a)};
+        model_.seed(smoothed_, m);
+        rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_, 0);
+        const double score = contour_contains(contour_, centre) ? contour_objectness(contour_) : 0.0;
+        if (score > best_score) {
+            best_score = score;
+            best = contour_.centroid;
+        }
+    }
+    return best;
+}
+
+bool Tracker::begin_track(Point m, double radius, bool search, TimePoint deadline) {
     model_.reset();
     attention_.reset();
     velocity_ = {};
     prior_.set_circle(std::max(radius, kStartRadiusPx));
+    if (search) m = best_start(m, radius, deadline);
+    model_.seed(smoothed_, m);
     rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
     if (attention_.check(contour_, contour_.centroid, tunables_.attention) != nullptr) return false;
+    model_.reset();
     model_.learn(contour_, scratch_);
     remember_contour();
     return true;
@@ -108,12 +135,12 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
         if (start_point_) {
-            found = begin_track(*start_point_, kStartRadiusPx, deadline);
+            found = begin_track(*start_point_, kStartRadiusPx, false, deadline);
             start_point_.reset();
         } else if (has_previous_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;
-            if (d.found) found = begin_track(d.centre, d.radius_px, deadline);
+            if (d.found) found = begin_track(d.centre, d.radius_px, true, deadline);
         }
         result_.state = found ? TrackState::Tracking : TrackState::Detecting;
         result_.has_contour = found;

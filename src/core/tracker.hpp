@@ -49,7 +49,8 @@ public:
     const ActiveRays& rays() const { return rays_; }
 
 private:
-    bool begin_track(Point m, double radius, TimePoint deadline);
+    Point best_start(Point centre, double radius, TimePoint deadline);
+    bool begin_track(Point m, double radius, bool search, TimePoint deadline);
     void track(TimePoint deadline);
     void remember_contour();
 

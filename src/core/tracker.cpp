@@ -9,7 +9,8 @@ namespace {
 
 constexpr double kStartRadiusPx = 10.0;  // least first guess of the contour size at a new target
 constexpr int kStartCandidates = 6;     // start points tried round a detected region's centre
-constexpr double kVelocityRate = 0.7;   // weight of the newest centroid step in the velocity
+constexpr double kVelocityRate = 0.7;
+constexpr double kRetryMinSpeedPx = 1.0; // slower targets are not worth a second prediction   // weight of the newest centroid step in the velocity
 
 }  // namespace
 
@@ -101,14 +102,27 @@ bool Tracker::begin_track(Point m, double radius, bool search, TimePoint deadlin
 
 void Tracker::track(TimePoint deadline) {
     const Point last = contour_.centroid;
-    const Point step = tunables_.predict ? velocity_ : Point{};
-    const Point predicted{last.x + step.x, last.y + step.y};
-    result_.predicted = predicted;
-    // The previous contour moved by the predicted step is where the target should be now.
-    for (int i = 0; i < last_count_; ++i) last_points_[i] = {last_points_[i].x + step.x, last_points_[i].y + step.y};
-    prior_.set_polygon(last_points_.data(), last_count_);
-    rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
-    if (const char* reason = attention_.check(contour_, predicted, tunables_.attention)) {
+    const Point v = tunables_.predict ? velocity_ : Point{};
+    // Constant velocity first; when that contour fails the attention check (the target turned or
+    // stopped), the target held still, then reversed — a turn must not cost the track.
+    const Point steps[] = {v, {0.0, 0.0}, {-v.x, -v.y}};
+    const int tries = tunables_.predict && std::hypot(v.x, v.y) >= kRetryMinSpeedPx ? 3 : 1;
+    Point applied{};
+    const char* reason = nullptr;
+    for (int k = 0; k < tries; ++k) {
+        const Point step = steps[k];
+        const Point predicted{last.x + step.x, last.y + step.y};
+        if (k == 0) result_.predicted = predicted;
+        // The previous contour moved by the step is where the target should be now.
+        for (int i = 0; i < last_count_; ++i)
+            last_points_[i] = {last_points_[i].x + step.x - applied.x, last_points_[i].y + step.y - applied.y};
+        applied = step;
+        prior_.set_polygon(last_points_.data(), last_count_);
+        rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
+        reason = attention_.check(contour_, predicted, tunables_.attention);
+        if (!reason) break;
+    }
+    if (reason) {
         result_.state = TrackState::Lost;
         result_.has_contour = false;
         result_.lost_reason = reason;

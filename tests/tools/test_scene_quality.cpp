@@ -56,3 +56,9 @@ TEST_CASE("Hard scenes that the tracker handles: mean IoU at least 0.6", "[quali
     CHECK(run_scene("occluder").mean_iou >= 0.6);
     CHECK(run_scene("speed-ramp").mean_iou >= 0.6);
 }
+
+TEST_CASE("A target moving 8 px/frame is kept without a loss", "[quality]") {
+    int losses = 0;  // speed-ramp holds 8 px/frame over frames 170–229
+    run_scene("speed-ramp", 170, 230, &losses);
+    CHECK(losses == 0);
+}

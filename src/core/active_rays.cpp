@@ -13,9 +13,9 @@ constexpr float kEdgeCap = 2.0f;           // an edge this many times the rim co
 constexpr float kSpreadFloor = 6.0f;       // grey: the least spread the region term assumes
 constexpr float kCrossingTolerance = 0.15f;
 constexpr int kCheckEvery = 8;             // rays between deadline checks
-constexpr float kMinRadiusPx = 8.0f;
+constexpr float kMinRadiusPx = 8.0f;       // least contour scale for the smoothness and temporal terms
 constexpr float kSearchScale = 1.6f;       // while tracking, search λ up to this × λ_prior …
-constexpr float kSearchMarginPx = 10.0f;   // … plus this       // least contour scale for the smoothness and temporal terms
+constexpr float kSearchMarginPx = 10.0f;   // … plus this
 
 float clamp_coord(double v) { return static_cast<float>(std::clamp(v, 1.0, kFrameSize - 2.0)); }
 

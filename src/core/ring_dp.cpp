@@ -7,7 +7,8 @@ namespace rays {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr long kEnumerateLimit = 4096;  // rings with fewer joint states are solved by enumeration
+constexpr long kEnumerateLimit = 4096;
+constexpr int kMaxStatesFast = 256;  // states per node the chain's scratch holds (back pointers are bytes)  // rings with fewer joint states are solved by enumeration
 
 }  // namespace
 
@@ -82,23 +83,27 @@ double RingDp::chain(double alpha, double beta, int first, bool closed, int a, i
         const int prev = node(t - 1), cur = node(t), next = node(t + 1);
         const float gp = gap_[prev], gc = gap_[cur];
         const float bw = static_cast<float>(beta) / (0.5f * (gp + gc));
+        const float inv_gp = 1.0f / gp, inv_gc = 1.0f / gc, aw = static_cast<float>(alpha) * inv_gc;
+        const int np = states_[prev];
+        float slope_in[kMaxStatesFast];  // (λ_cur,q − λ_prev,p) / gap for this q, per p
         unsigned char* back = &back_[static_cast<std::size_t>(t + 1) * stride * stride];
         for (int q = 0; q < states_[cur]; ++q) {
             const float lq = lam(cur, q);
+            for (int p = 0; p < np; ++p) slope_in[p] = (lq - lam(prev, p)) * inv_gp;
             for (int r = 0; r < states_[next]; ++r) {
                 const float lr = lam(next, r);
-                const float slope_out = (lr - lq) / gc;
+                const float slope_out = (lr - lq) * inv_gc;
                 float best = kInf;
                 int arg = 0;
-                for (int p = 0; p < states_[prev]; ++p) {
-                    const float d = slope_out - (lq - lam(prev, p)) / gp;
+                for (int p = 0; p < np; ++p) {
+                    const float d = slope_out - slope_in[p];
                     const float v = value_[p * stride + q] + bw * d * d;  // eq. 9, β term
                     if (v < best) {
                         best = v;
                         arg = p;
                     }
                 }
-                next_value_[q * stride + r] = best + pair_cost(cur, lq, lr) + unary(next, r);
+                next_value_[q * stride + r] = best + aw * (lr - lq) * (lr - lq) + unary(next, r);
                 back[q * stride + r] = static_cast<unsigned char>(arg);
             }
         }
@@ -134,6 +139,21 @@ double RingDp::chain(double alpha, double beta, int first, bool closed, int a, i
     return best;
 }
 
+int RingDp::smoothest_link(double alpha, const int* states, int from, int to) const {
+    int best = from;
+    double smoothest = std::numeric_limits<double>::infinity();
+    for (int k = from; k < to; ++k) {
+        const int i = k % nodes_, j = (k + 1) % nodes_;
+        const double d = lam(j, states[j]) - lam(i, states[i]);
+        const double link = alpha / gap_[i] * d * d;
+        if (link < smoothest) {
+            smoothest = link;
+            best = i;
+        }
+    }
+    return best % nodes_;
+}
+
 double RingDp::solve(double alpha, double beta, int* states) {
     const int m = nodes_;
     if (m == 0) return 0.0;
@@ -141,8 +161,16 @@ double RingDp::solve(double alpha, double beta, int* states) {
     for (int i = 0; i < m && joint <= kEnumerateLimit; ++i) joint *= states_[i];
     if (m < 4 || joint <= kEnumerateLimit) return enumerate(alpha, beta, states);
     chain(alpha, beta, 0, false, 0, 0, states);  // pass 1: open chain
-    const int cut = m / 2;
-    chain(alpha, beta, cut, true, states[cut], states[(cut + 1) % m], states);  // pass 2: closed ring
+    // Pass 2 closes the ring, cut at the smoothest link of pass 1's contour, so the fixed pair is not
+    // a jump; when that changed the contour, pass 3 closes it again from pass 2's contour, cut
+    // opposite. Each pass contains the previous answer: the energy never rises.
+    const int cut = smoothest_link(alpha, states, 0, m - 1);
+    std::copy(states, states + m, scratch_.begin());
+    chain(alpha, beta, cut, true, states[cut], states[(cut + 1) % m], states);
+    if (!std::equal(states, states + m, scratch_.begin())) {  // closing moved the contour: once more
+        const int other = (cut + m / 2) % m;
+        chain(alpha, beta, other, true, states[other], states[(other + 1) % m], states);
+    }
     return energy(alpha, beta, states);
 }
 

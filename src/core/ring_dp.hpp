@@ -3,11 +3,12 @@
 // the discrete eq. 10 with eq. 9's first (α) and second (β) order terms, λ' = Δλ / Δφ.
 //
 // The ring is closed, never cut open for good. Small rings are solved exactly by enumeration.
-// Larger ones in two passes: (1) the chain 0…M−1 without the wrap-around terms, solved exactly;
-// (2) the ring cut between the two rays opposite the cut of pass 1, their states fixed to pass 1's
-// choice, solved exactly with every term including the wrap-around. The result is a consistent
-// closed contour whose energy is never above pass 1's choice evaluated on the ring; its distance
-// from the true optimum is bounded by tests/core/test_ring_dp.cpp against brute force.
+// Larger ones in three passes: (1) the chain 0…M−1 without the wrap-around terms, solved exactly;
+// (2) the ring cut at the link where pass 1's contour is smoothest, the two rays there fixed to
+// pass 1's states, solved exactly with every term including the wrap-around; (3) the same from
+// pass 2's states, cut opposite that cut, when pass 2 changed any state. Each closed pass contains
+// the previous answer, so the energy never rises. The result is a consistent closed contour; its distance from the true optimum is bounded by
+// tests/core/test_ring_dp.cpp against brute force.
 #pragma once
 #include <vector>
 
@@ -34,6 +35,8 @@ private:
     // back to them are included.
     double chain(double alpha, double beta, int first, bool closed, int a, int b, int* states);
     double enumerate(double alpha, double beta, int* states);
+    // The link i → i+1 (from ≤ i < to, taken round the ring) with the least α term under the states.
+    int smoothest_link(double alpha, const int* states, int from, int to) const;
     float lam(int node, int s) const { return lam_[node * max_states_ + s]; }
     float unary(int node, int s) const { return unary_[node * max_states_ + s]; }
 

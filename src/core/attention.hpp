@@ -20,7 +20,6 @@ public:
     // Returns nullptr while the contour is plausible, else the reason the target counts as lost.
     // `predicted` is where the centroid was expected this frame.
     const char* check(const Contour& contour, Point predicted, const AttentionTunables& limits);
-    const ContourFeatures& features() const { return current_; }
 
 private:
     bool has_previous_ = false;

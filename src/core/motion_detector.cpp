@@ -134,22 +134,22 @@ int find_regions(Mask& mask, FillStack& stack, int min_area_px, std::array<Regio
 }
 
 // The largest region (the first on a tie) together with the regions close to it: one moving object.
-template <class Region>
-Detection describe_largest(const Region* regions, int described, int count) {
+template <class Region, std::size_t N>
+Detection describe_largest(const std::array<Region, N>& regions, int described, int count) {
     Detection best;
     best.regions = count;
     if (described == 0) return best;
-    const Region* largest = regions;
+    const Region* largest = regions.data();
     for (int i = 1; i < described; ++i)
         if (regions[i].area > largest->area) largest = &regions[i];
     // Grow the chosen set from the largest region: any region within kMergeGapPx of the set's
     // bounding box joins it, until none does (at most `described` rounds).
-    std::array<bool, 64> taken{};
+    std::array<bool, N> taken{};
     long area = 0, sum_x = 0, sum_y = 0;
     int x0 = largest->x0, y0 = largest->y0, x1 = largest->x1, y1 = largest->y1;
     for (bool grew = true; grew;) {
         grew = false;
-        for (int i = 0; i < described && i < static_cast<int>(taken.size()); ++i) {
+        for (int i = 0; i < described; ++i) {
             const Region& r = regions[i];
             if (taken[static_cast<std::size_t>(i)]) continue;
             const bool near = r.x0 <= x1 + kMergeGapPx && r.x1 >= x0 - kMergeGapPx && r.y0 <= y1 + kMergeGapPx &&
@@ -185,7 +185,7 @@ Detection MotionDetector::run_pass(double threshold, int min_area_px) {
     erode(work_, filter_tmp_, mask_);
     int described = 0;
     const int count = find_regions(mask_, fill_stack_, min_area_px, regions_, described);
-    Detection pass = describe_largest(regions_.data(), described, count);
+    Detection pass = describe_largest(regions_, described, count);
     pass.threshold = threshold;
     return pass;
 }

@@ -15,7 +15,6 @@ public:
     // A polygon ordered by angle round a point inside it (copied; no allocation).
     void set_polygon(const Point* pts, int n);
     void set_circle(double radius_px);
-    bool has_polygon() const { return n_ >= 3; }
 
     // Fills λ_prior for every ray of the table as seen from m, clamped to [lo, hi].
     void resample(const RayTable& table, Point m, double lo, double hi);

@@ -22,7 +22,6 @@ public:
 
     // Takes the sampling settings; returns false when they need more samples than the capacity.
     bool configure(const RaysTunables& t);
-    int samples() const { return samples_; }
 
     // Samples the ray from m in direction (c, s) with bilinear interpolation up to λ = lambda_limit
     // (and the image border) and writes at most K hypotheses, strongest first, into `out`.

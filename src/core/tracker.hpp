@@ -45,7 +45,6 @@ public:
     TrackState state() const { return result_.state; }
     const FrameResult& result() const { return result_; }
     const Contour& contour() const { return contour_; }
-    const ContourFeatures& features() const { return attention_.features(); }
     const ActiveRays& rays() const { return rays_; }
 
 private:

@@ -30,7 +30,9 @@ template <class Root>
 struct Param {
     ParamInfo info;
     // Alternatives in the order of ParamType and ParamValue.
-    std::variant<FieldAccess<Root, int>, FieldAccess<Root, double>, FieldAccess<Root, bool>> field;
+    std::variant<FieldAccess<Root, int>, FieldAccess<Root, double>, FieldAccess<Root, bool>,
+                 FieldAccess<Root, std::string>>
+        field;
 
     ParamValue read(const Root& root) const {
         // The accessor hands out a reference; reading through it leaves `root` unchanged.
@@ -67,7 +69,7 @@ public:
         template <class T>
         Section& add(std::string_view key, T Part::*member, std::string_view unit, double min, double max,
                      std::string_view doc) {
-            ParamInfo info{name_ + "." + std::string(key), param_type_of<T>(), kind_, unit, min, max, {}, doc};
+            ParamInfo info{name_ + "." + std::string(key), param_type_of<T>(), kind_, unit, min, max, {}, doc, {}};
             table_.add(std::move(info), FieldAccess<Root, T>([part = part_, member](Root& root) -> T& {
                            return part(root).*member;
                        }));
@@ -76,6 +78,20 @@ public:
 
         Section& add(std::string_view key, bool Part::*member, std::string_view doc) {
             return add(key, member, "", 0.0, 1.0, doc);
+        }
+
+        // A one-line text, such as a path.
+        Section& add(std::string_view key, std::string Part::*member, std::string_view doc) {
+            return add(key, member, "", 0.0, 0.0, doc);
+        }
+
+        // One word of `choices` ("v4l2|replay").
+        Section& add_choice(std::string_view key, std::string Part::*member, std::string_view choices,
+                            std::string_view doc) {
+            add(key, member, doc);
+            table_.params_.back().info.type = ParamType::Choice;
+            table_.params_.back().info.choices = choices;
+            return *this;
         }
 
     private:

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <system_error>
+#include <type_traits>
 
 namespace rays::config {
 namespace {
@@ -97,15 +98,41 @@ std::optional<std::string> parse_bool(const ParamInfo& param, std::string_view t
     return prefix(param, text) + " is not a boolean (use true/false, yes/no, on/off or 1/0)";
 }
 
+constexpr std::size_t kMaxTextLength = 1024;
+
+std::optional<std::string> parse_text(const ParamInfo& param, std::string_view text, ParamValue& out) {
+    if (text.size() > kMaxTextLength)
+        return param.name + " is longer than " + std::to_string(kMaxTextLength) + " characters";
+    for (char c : text)
+        if (static_cast<unsigned char>(c) < 0x20) return param.name + " contains a control character";
+    out = std::string(text);
+    return std::nullopt;
+}
+
+std::optional<std::string> parse_choice(const ParamInfo& param, std::string_view text, ParamValue& out) {
+    std::string_view rest = param.choices;
+    while (!rest.empty()) {
+        std::size_t bar = rest.find('|');
+        if (rest.substr(0, bar) == text) {
+            out = std::string(text);
+            return std::nullopt;
+        }
+        rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
+    }
+    return prefix(param, text) + " is not one of " + std::string(param.choices);
+}
+
 }  // namespace
 
 std::optional<std::string> parse_value(const ParamInfo& param, std::string_view text, ParamValue& out) {
     text = trim(text);
-    if (text.empty()) return param.name + " has no value";
+    if (text.empty() && param.type != ParamType::Text) return param.name + " has no value";
     switch (param.type) {
     case ParamType::Int: return parse_int(param, text, out);
     case ParamType::Double: return parse_double(param, text, out);
     case ParamType::Bool: return parse_bool(param, text, out);
+    case ParamType::Text: return parse_text(param, text, out);
+    case ParamType::Choice: return parse_choice(param, text, out);
     }
     return param.name + " has an unknown type";
 }
@@ -121,11 +148,17 @@ std::string format_number(double number) {
 std::string format_value(const ParamValue& value) {
     if (const int* number = std::get_if<int>(&value)) return std::to_string(*number);
     if (const bool* flag = std::get_if<bool>(&value)) return *flag ? "true" : "false";
+    if (const std::string* text = std::get_if<std::string>(&value)) return *text;
     return format_number(std::get<double>(value));
 }
 
 double value_as_number(const ParamValue& value) {
-    return std::visit([](auto v) { return static_cast<double>(v); }, value);
+    return std::visit(
+        [](const auto& v) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>) return std::nan("");
+            else return static_cast<double>(v);
+        },
+        value);
 }
 
 std::string describe_type_and_range(const ParamInfo& param) {
@@ -133,6 +166,8 @@ std::string describe_type_and_range(const ParamInfo& param) {
     case ParamType::Bool: return "bool (true/false)";
     case ParamType::Int: return "int, range " + range_text(param);
     case ParamType::Double: return "real, range " + range_text(param);
+    case ParamType::Text: return "text";
+    case ParamType::Choice: return "one of " + std::string(param.choices);
     }
     return {};
 }

@@ -19,10 +19,10 @@ std::string format_value(const ParamValue& value);
 // Shortest fixed-point text that parses back to `number`: "720", "0.002".
 std::string format_number(double number);
 
-// The value as a number for cross-field rules (bools read as 0 or 1).
+// The value as a number for cross-field rules (bools read as 0 or 1, text as NaN).
 double value_as_number(const ParamValue& value);
 
-// "int, range [4, 4096] rays", "real, range [0, 10]" or "bool (true/false)".
+// "int, range [4, 4096] rays", "real, range [0, 10]", "bool (true/false)", "text" or "one of a|b".
 std::string describe_type_and_range(const ParamInfo& param);
 
 }  // namespace rays::config

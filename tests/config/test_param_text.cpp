@@ -7,9 +7,9 @@ using namespace rays::config;
 
 namespace {
 
-ParamInfo int_param() { return {"rays.count", ParamType::Int, ParamKind::Tunable, "rays", 4, 4096, 360, "doc"}; }
-ParamInfo real_param() { return {"rays.alpha", ParamType::Double, ParamKind::Tunable, "", 0, 10, 0.02, "doc"}; }
-ParamInfo bool_param() { return {"track.predict", ParamType::Bool, ParamKind::Tunable, "", 0, 1, true, "doc"}; }
+ParamInfo int_param() { return {"rays.count", ParamType::Int, ParamKind::Tunable, "rays", 4, 4096, 360, "doc", {}}; }
+ParamInfo real_param() { return {"rays.alpha", ParamType::Double, ParamKind::Tunable, "", 0, 10, 0.02, "doc", {}}; }
+ParamInfo bool_param() { return {"track.predict", ParamType::Bool, ParamKind::Tunable, "", 0, 1, true, "doc", {}}; }
 
 }  // namespace
 
@@ -49,7 +49,7 @@ TEST_CASE("format_value gives text that parses back to the same value", "[config
     CHECK(format_value(ParamValue{720.0}) == "720");
     for (double number : {0.02, 0.002, 1.0 / 3.0, 123456.789, 1e-9}) {
         ParamValue parsed;
-        REQUIRE_FALSE(parse_value(ParamInfo{"x.y", ParamType::Double, ParamKind::Tunable, "", -1e9, 1e9, 0.0, ""},
+        REQUIRE_FALSE(parse_value(ParamInfo{"x.y", ParamType::Double, ParamKind::Tunable, "", -1e9, 1e9, 0.0, "", {}},
                                   format_value(ParamValue{number}), parsed));
         CHECK(std::get<double>(parsed) == number);
     }
@@ -63,4 +63,21 @@ TEST_CASE("edit distance counts swaps of neighbours as one edit", "[config][text
     CHECK(edit_distance("kitten", "sitting") == 3);
     CHECK(closest_name("rays.alpah", {"rays.beta", "rays.alpha"}) == std::optional<std::string_view>("rays.alpha"));
     CHECK_FALSE(closest_name("rays.gamma", {"rays.beta", "rays.alpha"}));
+}
+
+TEST_CASE("text and choice parameters parse, check and print back") {
+    ParamInfo path{"socket.path", ParamType::Text, ParamKind::Capacity, "", 0, 0, std::string{}, "doc", {}};
+    ParamInfo source{"camera.source", ParamType::Choice, ParamKind::Capacity, "", 0, 0, std::string{}, "doc",
+                     "v4l2|replay"};
+    ParamValue value;
+    REQUIRE_FALSE(parse_value(path, "  /run/raysd/raysd.sock ", value));
+    CHECK(std::get<std::string>(value) == "/run/raysd/raysd.sock");
+    REQUIRE_FALSE(parse_value(path, "", value));
+    CHECK(std::get<std::string>(value).empty());
+    CHECK(parse_value(path, std::string("a\x01") + "b", value).value() == "socket.path contains a control character");
+    REQUIRE_FALSE(parse_value(source, "replay", value));
+    CHECK(format_value(value) == "replay");
+    CHECK(parse_value(source, "v4l", value).value() == "camera.source = v4l is not one of v4l2|replay");
+    CHECK(parse_value(source, "", value).value() == "camera.source has no value");
+    CHECK(describe_type_and_range(source) == "one of v4l2|replay");
 }

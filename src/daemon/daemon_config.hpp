@@ -1,0 +1,94 @@
+// Everything raysd reads from its INI file: the tracking core's settings plus one struct per
+// subsystem section. Defaults are the member initialisers; the table in daemon_params.cpp gives
+// each key its unit, range and whether it is a capacity (fixed at start) or a tunable.
+#pragma once
+#include <string>
+
+#include "core/tracker_config.hpp"
+
+namespace rays::daemon {
+
+struct CameraSettings {                   // [camera]: fixed at start
+    std::string source = "v4l2";          // v4l2 | replay
+    std::string device = "/dev/video0";   // V4L2 device node
+    std::string format = "auto";          // auto | grey | yuyv | mjpeg
+    int width = 640;                      // requested capture size; the driver may grant another
+    int height = 480;
+    int fps = 30;
+    int crop_x = 0;                       // crop of the source frame before scaling; crop_w = 0: none
+    int crop_y = 0;
+    int crop_w = 0;
+    int crop_h = 0;
+    std::string replay_path;              // replay: YUV4MPEG2 file, FIFO, "-" (stdin) or image folder
+    bool replay_paced = true;             // replay at the file's frame rate, else as fast as tracked
+    bool replay_loop = false;             // start again at the end (files and folders only)
+    double frame_timeout_s = 1.0;         // the frame loop wakes this often without frames
+    int queue_frames = 4;                 // frames buffered between capture and the frame loop
+};
+
+struct LoopSettings {                 // [loop]
+    double budget_ms = 20.0;          // tunable: tracking deadline after the frame's capture time
+    int rt_priority = 0;              // SCHED_FIFO priority of the frame loop, 0: normal scheduling
+    int cpu = -1;                     // pin the frame loop to this CPU, -1: any
+    bool lock_memory = false;         // mlockall(MCL_CURRENT | MCL_FUTURE)
+};
+
+struct ControlSettings {                 // [control]: tunables
+    double horizontal_fov_deg = 60.0;    // camera field of view across the 128-pixel frame width
+    double vertical_fov_deg = 60.0;      // ... and height (after any crop)
+    double gain = 2.0;                   // proportional gain: rad/s per rad of angular error
+    double deadband_deg = 0.5;           // errors smaller than this command zero velocity
+    bool stop_when_lost = true;          // stop the axes while no target is tracked
+};
+
+struct PtuMotion {                       // [ptu] tunables: limits enforced above every driver, and poses
+    double pan_min_deg = -170.0;         // soft angle limits
+    double pan_max_deg = 170.0;
+    double tilt_min_deg = -30.0;
+    double tilt_max_deg = 90.0;
+    double max_velocity_deg_s = 90.0;
+    double max_accel_deg_s2 = 360.0;
+    double command_timeout_s = 0.5;      // a manual jog ends when not renewed within this
+    double home_pan_deg = 0.0;
+    double home_tilt_deg = 0.0;
+    double park_pan_deg = 0.0;
+    double park_tilt_deg = -30.0;
+    bool park_on_exit = false;           // park before stopping on SIGTERM
+};
+
+struct PtuSettings {                     // [ptu]
+    std::string driver = "mock";         // fixed at start: mock (real drivers: their own issue)
+    PtuMotion motion;
+};
+
+struct MockPtuSettings {                 // [mock]: the simulated unit's dynamics, fixed at start
+    double max_velocity_deg_s = 120.0;
+    double max_accel_deg_s2 = 720.0;
+    double latency_ms = 10.0;
+    std::string record_path;  // when set, every command the unit received is written here (CSV) at exit
+};
+
+struct SocketSettings {                       // [socket]: fixed at start
+    std::string path = "/run/raysd/raysd.sock";
+    int max_clients = 16;
+    int max_line_bytes = 4096;                // longest request line
+    int max_output_kib = 256;                 // a client's unsent replies beyond this: dropped
+};
+
+struct LogSettings {                    // [log]
+    std::string level = "info";         // tunable: debug | info | notice | warning | err
+    double repeat_interval_s = 10.0;    // tunable: one line per message and interval; repeats counted
+};
+
+struct DaemonConfig {
+    TrackerConfig tracker;
+    CameraSettings camera;
+    LoopSettings loop;
+    ControlSettings control;
+    PtuSettings ptu;
+    MockPtuSettings mock;
+    SocketSettings socket;
+    LogSettings log;
+};
+
+}  // namespace rays::daemon

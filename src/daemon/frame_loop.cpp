@@ -1,0 +1,248 @@
+#include "daemon/frame_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <thread>
+
+#include "control/pointing.hpp"
+
+namespace rays::daemon {
+namespace {
+
+using Seconds = std::chrono::duration<double>;
+using Micros = std::chrono::duration<float, std::micro>;
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+// The loop writes to the unit at least this often, frames or not, so the limiter's braking plan holds.
+constexpr Seconds kLongestWait{0.05};
+
+ptu::PtuCommand position_command(double pan_rad, double tilt_rad) {
+    ptu::PtuCommand command;
+    command.axes[0] = {ptu::CommandMode::Position, pan_rad};
+    command.axes[1] = {ptu::CommandMode::Position, tilt_rad};
+    return command;
+}
+
+float velocity_deg_s(const ptu::AxisCommand& axis) {
+    return axis.mode == ptu::CommandMode::Velocity ? static_cast<float>(axis.value * kRadToDeg) : 0.0f;
+}
+
+ptu::PtuLimits limits_of(const PtuMotion& motion) {
+    ptu::PtuLimits limits;
+    limits.axes[0] = {motion.pan_min_deg * kDegToRad, motion.pan_max_deg * kDegToRad,
+                      motion.max_velocity_deg_s * kDegToRad, motion.max_accel_deg_s2 * kDegToRad};
+    limits.axes[1] = {motion.tilt_min_deg * kDegToRad, motion.tilt_max_deg * kDegToRad,
+                      motion.max_velocity_deg_s * kDegToRad, motion.max_accel_deg_s2 * kDegToRad};
+    limits.command_interval_s = kLongestWait.count();
+    return limits;
+}
+
+}  // namespace
+
+FrameLoop::FrameLoop(const DaemonConfig& config, LoopChannels& channels, ptu::PtuLimiter& ptu,
+                     ServiceNotifier& notifier, const Clock& clock, FrameObserver* observer)
+    : channels_(channels),
+      ptu_(ptu),
+      notifier_(notifier),
+      clock_(clock),
+      observer_(observer),
+      tracker_(config.tracker, clock),
+      tunables_(loop_tunables(config)),
+      frame_timeout_(std::chrono::duration_cast<std::chrono::nanoseconds>(Seconds(config.camera.frame_timeout_s))),
+      wait_(std::chrono::duration_cast<std::chrono::nanoseconds>(std::min(kLongestWait, Seconds(config.camera.frame_timeout_s)))),
+      started_(clock.now()) {
+    ptu_.set_limits(limits_of(tunables_.ptu));
+}
+
+void FrameLoop::run() {
+    while (!channels_.stop.load(std::memory_order_acquire)) step();
+    stop_unit();
+}
+
+void FrameLoop::step() {
+    frame_fresh_ = channels_.frames.pop(frame_, wait_);
+    TimePoint step_start = clock_.now();
+    if (!frame_fresh_) ++stats_.frame_timeouts;
+
+    LoopCommand command;
+    while (channels_.commands.pop(command)) apply(command, step_start);
+
+    bool connected = channels_.camera_connected.load(std::memory_order_acquire);
+    if (connected != camera_was_connected_)
+        channels_.log.log(connected ? Priority::Notice : Priority::Warning,
+                          connected ? "camera back: tracking resumes" : "camera away: axes stopped");
+    camera_was_connected_ = connected;
+
+    if (frame_fresh_) track_frame(step_start);
+    drive_unit(clock_.now());
+    publish(clock_.now(), step_start);
+    notifier_.feed_watchdog(clock_.now());
+}
+
+void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
+    switch (command.kind) {
+    case CommandKind::Tunables: apply_tunables(command.tunables); return;
+    case CommandKind::Track:
+        tracker_.start_at({command.a, command.b});
+        mode_ = ControlMode::Automatic;
+        return;
+    case CommandKind::Release: tracker_.release(); return;
+    case CommandKind::Reinit: tracker_.reinit(); return;
+    case CommandKind::Resume: mode_ = ControlMode::Automatic; return;
+    case CommandKind::Jog:
+        manual_ = {};
+        manual_.axes[0].value = command.a;
+        manual_.axes[1].value = command.b;
+        jog_expires_ = now + std::chrono::duration_cast<TimePoint::duration>(Seconds(tunables_.ptu.command_timeout_s));
+        jogging_ = true;
+        break;
+    case CommandKind::Goto: manual_ = position_command(command.a, command.b); break;
+    case CommandKind::Home:
+        manual_ = position_command(tunables_.ptu.home_pan_deg * kDegToRad, tunables_.ptu.home_tilt_deg * kDegToRad);
+        break;
+    case CommandKind::Park:
+        manual_ = position_command(tunables_.ptu.park_pan_deg * kDegToRad, tunables_.ptu.park_tilt_deg * kDegToRad);
+        break;
+    case CommandKind::Stop: manual_ = ptu::PtuCommand::stop(); break;
+    }
+    if (command.kind != CommandKind::Jog) jogging_ = false;
+    mode_ = ControlMode::Manual;
+}
+
+void FrameLoop::apply_tunables(const LoopTunables& tunables) {
+    if (!tracker_.set_tunables(tunables.tracker)) {
+        channels_.log.log(Priority::Err, "new tracker settings do not fit the capacities; kept the old ones");
+        return;
+    }
+    tunables_ = tunables;
+    ptu_.set_limits(limits_of(tunables_.ptu));
+}
+
+void FrameLoop::track_frame(TimePoint now) {
+    TimePoint deadline =
+        frame_.stamp + std::chrono::duration_cast<TimePoint::duration>(
+                           std::chrono::duration<double, std::milli>(tunables_.budget_ms));
+    if (deadline <= now) ++stats_.late_frames;
+    last_frame_at_ = now;
+    TimePoint begin = clock_.now();
+    const FrameResult& result = tracker_.process(frame_.image, deadline);
+    const Contour& contour = tracker_.contour();
+    telemetry_.frame = frame_.index;
+    telemetry_.time_s = Seconds(frame_.stamp - started_).count();
+    telemetry_.state = result.state;
+    telemetry_.has_contour = result.has_contour;
+    telemetry_.ref_x = result.has_contour ? static_cast<float>(contour.centroid.x) : 0.0f;
+    telemetry_.ref_y = result.has_contour ? static_cast<float>(contour.centroid.y) : 0.0f;
+    telemetry_.area_px = result.has_contour ? static_cast<float>(contour.area) : 0.0f;
+    telemetry_.rays = result.has_contour ? contour.size : 0;
+    telemetry_.levels = result.has_contour ? contour.levels : 0;
+    telemetry_.deadline_hit = result.has_contour && contour.deadline_hit;
+    telemetry_.track_us = Micros(clock_.now() - begin).count();
+    ++stats_.frames;
+    if (telemetry_.deadline_hit) ++stats_.deadline_hits;
+}
+
+ptu::PtuCommand FrameLoop::next_command(TimePoint now) const {
+    if (!driver_status_.ok) return ptu::PtuCommand::stop();
+    if (mode_ == ControlMode::Manual) {  // a person steers, camera or not
+        if (jogging_ && now > jog_expires_) return ptu::PtuCommand::stop();
+        return manual_;
+    }
+    if (!camera_was_connected_ || now - last_frame_at_ > frame_timeout_) return ptu::PtuCommand::stop();
+    if (!telemetry_.has_contour) {
+        if (tunables_.control.stop_when_lost) return ptu::PtuCommand::stop();
+        return commanded_;
+    }
+    control::FieldOfView fov{tunables_.control.horizontal_fov_deg * kDegToRad,
+                             tunables_.control.vertical_fov_deg * kDegToRad};
+    control::AngularOffset offset = control::pixel_to_angle({telemetry_.ref_x, telemetry_.ref_y}, fov);
+    return control::proportional_command(offset, tunables_.control.gain, tunables_.control.deadband_deg * kDegToRad);
+}
+
+void FrameLoop::drive_unit(TimePoint now) {
+    commanded_ = next_command(now);
+    ptu::DriverStatus wrote = ptu_.write(commanded_, now);
+    ptu::DriverStatus got = ptu_.read(unit_, now);
+    bool ok = wrote.ok && got.ok;
+    if (!ok) {
+        ++stats_.driver_errors;
+        if (driver_status_.ok)
+            channels_.log.log(Priority::Err, "PTU driver fault, axes stopped: %s", wrote.ok ? got.what() : wrote.what());
+        driver_status_ = wrote.ok ? got : wrote;
+    } else if (!driver_status_.ok) {
+        channels_.log.log(Priority::Notice, "PTU driver recovered");
+        driver_status_ = ptu::DriverStatus::success();
+    }
+    if (jogging_ && now > jog_expires_) {
+        jogging_ = false;
+        manual_ = ptu::PtuCommand::stop();
+    }
+}
+
+void FrameLoop::record_times(float loop_us) {
+    auto slot = static_cast<std::size_t>(stats_.frames % kRecentFrames);
+    stats_.recent_loop_us[slot] = loop_us;
+    stats_.recent_track_us[slot] = telemetry_.track_us;
+    stats_.recent_latency_us[slot] = telemetry_.latency_us;
+    auto bin = std::upper_bound(kHistogramEdgesUs.begin(), kHistogramEdgesUs.end(), loop_us);
+    ++stats_.loop_histogram[static_cast<std::size_t>(
+        std::min<std::ptrdiff_t>(bin - kHistogramEdgesUs.begin(), kHistogramBins - 1))];
+}
+
+void FrameLoop::publish(TimePoint now, TimePoint step_start) {
+    telemetry_.mode = mode_;
+    telemetry_.pan_deg = static_cast<float>(unit_.axes[0].position_rad * kRadToDeg);
+    telemetry_.tilt_deg = static_cast<float>(unit_.axes[1].position_rad * kRadToDeg);
+    telemetry_.pan_cmd_deg_s = velocity_deg_s(commanded_.axes[0]);
+    telemetry_.tilt_cmd_deg_s = velocity_deg_s(commanded_.axes[1]);
+    if (frame_fresh_) {
+        telemetry_.loop_us = Micros(now - step_start).count();
+        telemetry_.latency_us = Micros(now - frame_.stamp).count();
+        record_times(telemetry_.loop_us);
+        if (!channels_.telemetry.push(telemetry_)) ++stats_.telemetry_dropped;
+        if (observer_ != nullptr) observer_->on_frame(telemetry_);
+        channels_.snapshot.try_publish([&](SnapshotFrame& snap) {
+            const Contour& contour = tracker_.contour();
+            snap.frame = frame_.index;
+            snap.image = frame_.image;
+            snap.has_contour = telemetry_.has_contour;
+            snap.ref = contour.ref;
+            snap.points = telemetry_.has_contour ? std::min(contour.size, kMaxSnapshotPoints) : 0;
+            for (int i = 0; i < snap.points; ++i) snap.contour[static_cast<std::size_t>(i)] = contour.points[i].p;
+        });
+    }
+    channels_.status.try_publish([&](LoopStatus& status) {
+        status.last = telemetry_;
+        status.running = true;
+        status.camera_connected = camera_was_connected_;
+        status.mode = mode_;
+        status.ptu_fault = !driver_status_.ok;
+        status.ptu_message = driver_status_.message;
+        status.ptu = unit_;
+        status.stats = stats_;
+    });
+    channels_.wake_socket_thread();
+}
+
+void FrameLoop::stop_unit() {
+    if (tunables_.ptu.park_on_exit && driver_status_.ok) {
+        ptu::PtuCommand park =
+            position_command(tunables_.ptu.park_pan_deg * kDegToRad, tunables_.ptu.park_tilt_deg * kDegToRad);
+        TimePoint give_up = clock_.now() + std::chrono::seconds(5);
+        for (int tries = 0; tries < 1000 && clock_.now() < give_up; ++tries) {
+            TimePoint now = clock_.now();
+            if (!ptu_.write(park, now).ok || !ptu_.read(unit_, now).ok) break;
+            bool arrived = std::abs(unit_.axes[0].position_rad - park.axes[0].value) < 1e-3 &&
+                           std::abs(unit_.axes[1].position_rad - park.axes[1].value) < 1e-3;
+            if (arrived) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+    }
+    ptu_.stop(clock_.now());
+    ptu_.deactivate();
+}
+
+}  // namespace rays::daemon

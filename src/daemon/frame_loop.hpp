@@ -1,0 +1,70 @@
+// The real-time frame loop: next frame (its only wait, with a timeout) → commands from the socket →
+// track with deadline = capture time + budget → control → limited PTU write and state read →
+// telemetry, status and snapshot out → watchdog. Nothing here allocates, blocks on I/O or throws
+// once run() has started.
+#pragma once
+#include <chrono>
+
+#include "core/clock.hpp"
+#include "core/tracker.hpp"
+#include "daemon/loop_channels.hpp"
+#include "daemon/service_notifier.hpp"
+#include "drivers/ptu_limiter.hpp"
+
+namespace rays::daemon {
+
+// Tests watch every processed frame through this; called on the frame loop's thread.
+class FrameObserver {
+public:
+    virtual ~FrameObserver() = default;
+    virtual void on_frame(const FrameTelemetry& frame) = 0;
+};
+
+class FrameLoop {
+public:
+    FrameLoop(const DaemonConfig& config, LoopChannels& channels, ptu::PtuLimiter& ptu, ServiceNotifier& notifier,
+              const Clock& clock, FrameObserver* observer = nullptr);
+
+    // Steps until channels.stop, then stops the unit (parking first when configured).
+    void run();
+    // One pass; public for tests that drive the loop by hand.
+    void step();
+    // Stops both axes, parking first when configured; bounded in time.
+    void stop_unit();
+
+private:
+    void apply(const LoopCommand& command, TimePoint now);
+    void apply_tunables(const LoopTunables& tunables);
+    void track_frame(TimePoint now);
+    ptu::PtuCommand next_command(TimePoint now) const;
+    void drive_unit(TimePoint now);
+    void publish(TimePoint now, TimePoint step_start);
+    void record_times(float loop_us);
+
+    LoopChannels& channels_;
+    ptu::PtuLimiter& ptu_;
+    ServiceNotifier& notifier_;
+    const Clock& clock_;
+    FrameObserver* observer_;
+    Tracker tracker_;
+    LoopTunables tunables_;
+    std::chrono::nanoseconds frame_timeout_;  // no frame for this long: the axes stop
+    std::chrono::nanoseconds wait_;           // longest wait for a frame: the unit gets a write this often
+    TimePoint started_;
+
+    CapturedFrame frame_;
+    bool frame_fresh_ = false;
+    TimePoint last_frame_at_{};       // the axes stop when no frame came for frame_timeout_
+    FrameTelemetry telemetry_;
+    LoopStats stats_;
+    ControlMode mode_ = ControlMode::Automatic;
+    ptu::PtuCommand manual_;          // the manual command in force
+    TimePoint jog_expires_{};         // a jog stops by itself after this
+    bool jogging_ = false;
+    ptu::PtuCommand commanded_;       // the last command written
+    ptu::PtuState unit_;
+    ptu::DriverStatus driver_status_;
+    bool camera_was_connected_ = true;
+};
+
+}  // namespace rays::daemon

@@ -1,0 +1,16 @@
+#include "daemon/loop_messages.hpp"
+
+namespace rays::daemon {
+
+LoopTunables loop_tunables(const DaemonConfig& config) {
+    LoopTunables tunables;
+    tunables.tracker = config.tracker.tunables;
+    tunables.budget_ms = config.loop.budget_ms;
+    tunables.control = config.control;
+    tunables.ptu = config.ptu.motion;
+    return tunables;
+}
+
+const char* to_string(ControlMode mode) { return mode == ControlMode::Automatic ? "automatic" : "manual"; }
+
+}  // namespace rays::daemon

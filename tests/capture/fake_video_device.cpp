@@ -271,6 +271,11 @@ int FakeVideoDevice::munmap(void* address, std::size_t length) {
 // As vb2: an error while not streaming or with nothing queued; readable when a frame is waiting.
 // Waiting moves the fake clock by the whole timeout.
 int FakeVideoDevice::poll(int fd, int timeout_ms) {
+    if (poll_error_ != 0) {
+        const int error = poll_error_;
+        poll_error_ = 0;
+        return fail(error);
+    }
     if (fd >= 0) {
         if (!session_ || fd != session_->fd) {
             violation("poll on fd " + std::to_string(fd) + ", which is not open");

@@ -48,6 +48,7 @@ public:
     void unplug();                          // the open fd dies; open() fails with ENOENT
     void replug(FakeDriverConfig config);   // present again, perhaps with other formats
     void fail_next(unsigned long request, int error) { injected_[request] = error; }
+    void fail_next_poll(int error) { poll_error_ = error; }  // e.g. EINTR for a signal
 
     const std::vector<std::string>& violations() const { return violations_; }
     const std::vector<TimePoint>& open_attempts() const { return open_attempts_; }
@@ -115,6 +116,7 @@ private:
     std::deque<FakeFrame> pending_;
     std::uint32_t next_sequence_ = 0;
     std::map<unsigned long, int> injected_;
+    int poll_error_ = 0;
     std::vector<std::string> violations_;
     std::vector<TimePoint> open_attempts_;
     int last_open_flags_ = 0;

@@ -115,6 +115,19 @@ TEST_CASE("DQBUF or QBUF failing with ENODEV or EIO is a disconnect, and the sam
     }
 }
 
+TEST_CASE("a signal during the wait is a Timeout; poll failing otherwise is a disconnect") {
+    CameraRig rig;
+    rig.open_streaming();
+    rig.device.fail_next_poll(EINTR);
+    CHECK(rig.next() == CaptureResult::Timeout);
+    rig.device.push(grey_frame());
+    CHECK(rig.next() == CaptureResult::Frame);
+    rig.device.fail_next_poll(ENOMEM);
+    CHECK(rig.next() == CaptureResult::Disconnected);
+    CHECK(rig.camera.error() == "/dev/video0: poll: ENOMEM");
+    check_driver_clean(rig.device);
+}
+
 TEST_CASE("a device that comes back unusable is retried, with the reason in the status") {
     CameraRig rig;
     stream_then_unplug(rig);

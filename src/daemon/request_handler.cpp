@@ -23,6 +23,8 @@ using nlohmann::json;
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr int kSnapshotZoom = 4;
+// Copying and printing a JSON value recurse once per level: a deeper "id" overflowed the stack.
+constexpr int kMaxRequestDepth = 64;
 
 json ok(std::string_view name) { return {{"class", "ok"}, {"cmd", name}}; }
 
@@ -73,8 +75,15 @@ json RequestHandler::error(std::string_view code, std::string_view message) {
 }
 
 json RequestHandler::handle(std::string_view line, ClientSession& session) {
-    json request = json::parse(line, nullptr, false);
+    bool too_deep = false;
+    auto limit_depth = [&](int depth, json::parse_event_t, json&) {  // depth 0: the request itself
+        if (depth >= kMaxRequestDepth) too_deep = true;
+        return depth < kMaxRequestDepth;  // false: the parser does not build the deeper value
+    };
+    json request = json::parse(line, limit_depth, false);
     if (request.is_discarded()) return error("bad_json", "the request is not valid JSON");
+    if (too_deep)
+        return error("bad_request", "a request is nested at most " + std::to_string(kMaxRequestDepth) + " levels deep");
     if (!request.is_object()) return error("bad_request", "a request is a JSON object");
     json reply = dispatch(request, session);
     if (auto id = request.find("id"); id != request.end()) reply["id"] = *id;

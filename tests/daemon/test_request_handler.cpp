@@ -143,3 +143,18 @@ TEST_CASE("watch switches the client's telemetry on and off; status and stats re
     json version = f.ask(R"({"cmd":"version"})");
     CHECK(version["protocol"]["major"] == kProtocolMajor);
 }
+
+TEST_CASE("a request nested deeper than 64 levels is refused, not copied into its reply") {
+    Fixture f;
+    auto with_id_depth = [](int levels) {
+        return R"({"cmd":"status","id":)" + std::string(static_cast<std::size_t>(levels), '[') +
+               std::string(static_cast<std::size_t>(levels), ']') + "}";
+    };
+    CHECK(f.ask(with_id_depth(63))["class"] == "status");
+    CHECK(f.error_code(with_id_depth(64)) == "bad_request");
+    json deep = f.ask(with_id_depth(200000));  // overflowed the stack when the id was copied
+    CHECK(deep["error"]["code"] == "bad_request");
+    CHECK(!deep.contains("id"));
+    CHECK(f.error_code(std::string(100000, '[')) == "bad_json");
+}
+

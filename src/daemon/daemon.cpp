@@ -19,6 +19,7 @@
 #include "daemon/replay_source.hpp"
 #include "daemon/request_handler.hpp"
 #include "daemon/service_notifier.hpp"
+#include "daemon/v4l2_source.hpp"
 #include "drivers/mock/mock_ptu.hpp"
 
 namespace rays::daemon {
@@ -77,8 +78,7 @@ void block_daemon_signals() {
 
 std::unique_ptr<FrameSource> open_frame_source(const CameraSettings& camera, const Clock& clock, std::string& error) {
     if (camera.source == "replay") return ReplaySource::open(camera, clock, error);
-    error = "camera.source = " + camera.source + " is not built into this raysd";
-    return nullptr;
+    return V4l2Source::open(camera, clock, error);
 }
 
 std::unique_ptr<ptu::PtuDriver> make_ptu_driver(const DaemonConfig& config, const Clock& clock) {

@@ -18,7 +18,8 @@ public:
     void stopping();
 
     // Frame loop: sends WATCHDOG=1 when half the watchdog interval has passed since the last one.
-    // No allocation; one datagram when due.
+    // No allocation; one datagram to systemd's notify socket when due (every few seconds), which
+    // systemd drains at once, so the send does not wait.
     void feed_watchdog(TimePoint now);
 
     bool watchdog_enabled() const { return interval_.count() > 0; }

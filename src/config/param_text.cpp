@@ -105,6 +105,10 @@ std::optional<std::string> parse_text(const ParamInfo& param, std::string_view t
         return param.name + " is longer than " + std::to_string(kMaxTextLength) + " characters";
     for (char c : text)
         if (static_cast<unsigned char>(c) < 0x20) return param.name + " contains a control character";
+    // An INI file reads " ;x" as a comment but "key =;x" as ";x": refused everywhere, so that set
+    // accepts what a file does and every value reads back from the file sample_ini writes.
+    if (text.starts_with(';') || text.find(" ;") != std::string_view::npos)
+        return prefix(param, text) + " has a ';' at its start or after a blank, where an INI file starts a comment";
     out = std::string(text);
     return std::nullopt;
 }

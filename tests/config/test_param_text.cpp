@@ -81,3 +81,15 @@ TEST_CASE("text and choice parameters parse, check and print back") {
     CHECK(parse_value(source, "", value).value() == "camera.source has no value");
     CHECK(describe_type_and_range(source) == "one of v4l2|replay");
 }
+
+TEST_CASE("text values that an INI file would cut at a comment are refused") {
+    ParamInfo path{"socket.path", ParamType::Text, ParamKind::Capacity, "", 0, 0, std::string{}, "doc", {}};
+    ParamValue value = std::string("kept");
+    CHECK(parse_value(path, ";y", value).value() ==
+          "socket.path = ;y has a ';' at its start or after a blank, where an INI file starts a comment");
+    CHECK(parse_value(path, "a ;b", value));
+    CHECK(std::get<std::string>(value) == "kept");
+    REQUIRE_FALSE(parse_value(path, "a;b", value));
+    CHECK(std::get<std::string>(value) == "a;b");
+}
+

@@ -171,10 +171,11 @@ void CommandServer::read_client(Client& client) {
     char buffer[4096];
     for (;;) {
         ssize_t got = recv(client.fd, buffer, sizeof buffer, 0);
-        if (got == 0) return drop(client, nullptr);
+        if (got == 0) return drop(client);
         if (got < 0) {
             if (errno == EAGAIN || errno == EWOULDBLOCK) break;
-            return drop(client, "read error");
+            if (errno != ECONNRESET) log(Priority::Warning, "dropped a client after a read error: %s", std::strerror(errno));
+            return drop(client);
         }
         client.in.append(buffer, static_cast<std::size_t>(got));
         handle_lines(client);
@@ -217,8 +218,10 @@ void CommandServer::send(Client& client, const nlohmann::json& message) {
     if (client.fd < 0) return;
     client.out += serialise(message);
     flush(client);
-    if (client.fd >= 0 && client.out.size() > static_cast<std::size_t>(settings_.max_output_kib) * 1024)
-        drop(client, "it does not read its replies");
+    if (client.fd >= 0 && client.out.size() > static_cast<std::size_t>(settings_.max_output_kib) * 1024) {
+        log(Priority::Warning, "dropped a client: it does not read its replies");
+        drop(client);
+    }
 }
 
 void CommandServer::flush(Client& client) {
@@ -226,14 +229,15 @@ void CommandServer::flush(Client& client) {
         ssize_t sent = ::send(client.fd, client.out.data(), client.out.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
         if (sent < 0) {
             if (errno == EAGAIN || errno == EWOULDBLOCK) return;
-            return drop(client, nullptr);
+            if (errno != EPIPE && errno != ECONNRESET)
+                log(Priority::Warning, "dropped a client after a write error: %s", std::strerror(errno));
+            return drop(client);
         }
         client.out.erase(0, static_cast<std::size_t>(sent));
     }
 }
 
-void CommandServer::drop(Client& client, const char* why) {
-    if (why != nullptr) log(Priority::Warning, "dropped a client: %s", why);
+void CommandServer::drop(Client& client) {
     close(client.fd);
     client.fd = -1;
     client.in.clear();

@@ -55,7 +55,7 @@ private:
     void handle_lines(Client& client);
     void send(Client& client, const nlohmann::json& message);
     void flush(Client& client);
-    void drop(Client& client, const char* why);
+    void drop(Client& client);
     void fan_out_telemetry();
     bool take_signals();  // false when asked to stop
 

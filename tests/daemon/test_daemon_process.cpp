@@ -131,7 +131,7 @@ TEST_CASE("config errors name file and line and exit with 78; --check-config val
 }
 
 TEST_CASE("raysd tells systemd READY=1 once serving, feeds the watchdog, and stops cleanly on SIGTERM") {
-    Setup s = make_setup("notify", "[ptu]\npark_on_exit = false\n");
+    Setup s = make_setup("notify", "[ptu]\npark_on_exit = true\npark_pan_deg = 0\npark_tilt_deg = -20\n");
     NotifyListener notify(s.dir / "notify.sock");
     DaemonProcess daemon = start(s, {{"NOTIFY_SOCKET", (s.dir / "notify.sock").string()},
                                      {"WATCHDOG_USEC", "400000"},
@@ -144,8 +144,11 @@ TEST_CASE("raysd tells systemd READY=1 once serving, feeds the watchdog, and sto
     CHECK(daemon.wait(3s) == 0);
     CHECK(notify.wait_for("STOPPING=1", 1s));
     CHECK_FALSE(fs::exists(s.socket));
-    // The unit's last command: both axes at zero velocity.
+    // Parked first (a position command to tilt -20 deg), then both axes at zero velocity.
+    std::string records = read_file(s.records);
+    CHECK(records.find(",position,0,position,-0.34906585") != std::string::npos);
     CHECK(last_record(s).find(",velocity,0,velocity,0") != std::string::npos);
+    CHECK(daemon.log().find("<5>stopped") != std::string::npos);
 }
 
 TEST_CASE("every command works over the socket, and raysctl's exit codes tell the outcome") {
@@ -330,4 +333,22 @@ TEST_CASE("under systemd socket activation raysd serves the passed socket and ne
     daemon.signal(SIGTERM);
     daemon.wait(5s);
     CHECK(fs::exists(other));
+}
+
+TEST_CASE("real-time options are applied or their refusal is reported in the log and the status") {
+    Setup s = make_setup("realtime", "[loop]\nrt_priority = 10\ncpu = 0\nlock_memory = true\n");
+    DaemonProcess daemon = start(s);
+    REQUIRE(wait_for_socket(s.socket, 10s));
+    LineConnection c(s.socket);
+    c.read_json();
+    json realtime = c.request({{"cmd", "status"}})["realtime"];
+    std::string priority = realtime["priority"], affinity = realtime["affinity"], memory = realtime["memory_lock"];
+    INFO(priority << " / " << affinity << " / " << memory);
+    CHECK((priority == "SCHED_FIFO 10" || priority.rfind("refused: SCHED_FIFO 10: ", 0) == 0));
+    CHECK((affinity == "pinned to CPU 0" || affinity.rfind("refused: CPU 0: ", 0) == 0));
+    CHECK((memory == "locked (mlockall)" || memory.rfind("refused: mlockall: ", 0) == 0));
+    for (const std::string& report : {priority, affinity, memory})
+        if (report.rfind("refused", 0) == 0) CHECK(daemon.log().find(report) != std::string::npos);
+    daemon.signal(SIGTERM);
+    CHECK(daemon.wait(3s) == 0);
 }

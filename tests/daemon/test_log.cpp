@@ -1,0 +1,88 @@
+// Logging: sd-daemon priority prefixes for journald, the level filter, rate-limited repeats, and the
+// frame loop's non-blocking queue.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "daemon/log.hpp"
+#include "daemon/loop_log.hpp"
+
+namespace {
+
+using namespace rays::daemon;
+
+// Sends stderr to a file while alive; text() reads what was written.
+class CapturedStderr {
+public:
+    CapturedStderr() : path_("captured-stderr.txt") {
+        std::fflush(stderr);
+        saved_ = dup(STDERR_FILENO);
+        std::FILE* file = std::fopen(path_.c_str(), "w");
+        dup2(fileno(file), STDERR_FILENO);
+        std::fclose(file);
+    }
+    ~CapturedStderr() {
+        std::fflush(stderr);
+        dup2(saved_, STDERR_FILENO);
+        close(saved_);
+    }
+    std::string text() const {
+        std::fflush(stderr);
+        std::ifstream file(path_);
+        std::stringstream content;
+        content << file.rdbuf();
+        return content.str();
+    }
+
+private:
+    std::string path_;
+    int saved_ = -1;
+};
+
+}  // namespace
+
+TEST_CASE("log lines carry the sd-daemon priority prefix and respect the level") {
+    CapturedStderr captured;
+    set_log_level(Priority::Info);
+    set_log_repeat_interval(std::chrono::seconds(0));
+    log(Priority::Err, "disk %s", "gone");
+    log(Priority::Info, "frame %d", 7);
+    log(Priority::Debug, "not shown");
+    CHECK(captured.text() == "<3>disk gone\n<6>frame 7\n");
+    Priority parsed = Priority::Info;
+    CHECK(parse_priority("warning", parsed));
+    CHECK(parsed == Priority::Warning);
+    CHECK_FALSE(parse_priority("loud", parsed));
+}
+
+TEST_CASE("a repeated message is written once per interval, then with the count held back") {
+    CapturedStderr captured;
+    set_log_level(Priority::Info);
+    set_log_repeat_interval(std::chrono::milliseconds(200));
+    for (int i = 0; i < 5; ++i) log(Priority::Warning, "camera away (%d)", i);
+    log(Priority::Warning, "another message");
+    CHECK(captured.text() == "<4>camera away (0)\n<4>another message\n");
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    log(Priority::Warning, "camera away (%d)", 5);
+    CHECK(captured.text() == "<4>camera away (0)\n<4>another message\n<4>camera away (5) (repeated 4 more times)\n");
+    set_log_repeat_interval(std::chrono::seconds(0));
+}
+
+TEST_CASE("the frame loop's log lines wait in a bounded queue until drained; overflow is counted") {
+    CapturedStderr captured;
+    set_log_level(Priority::Info);
+    set_log_repeat_interval(std::chrono::seconds(0));
+    LoopLog loop_log;
+    for (int i = 0; i < 70; ++i) loop_log.log(Priority::Notice, "frame %d late", i);
+    CHECK(captured.text().empty());  // nothing written by the loop itself
+    CHECK(loop_log.dropped() == 6);
+    loop_log.drain();
+    std::string text = captured.text();
+    CHECK(std::count(text.begin(), text.end(), '\n') == 64);
+    CHECK(text.rfind("<5>frame 0 late\n", 0) == 0);
+}

@@ -5,10 +5,10 @@
 #include <atomic>
 
 #include "daemon/frame_queue.hpp"
-#include "daemon/latest_value.hpp"
+#include "common/latest_value.hpp"
 #include "daemon/loop_log.hpp"
 #include "daemon/loop_messages.hpp"
-#include "daemon/spsc_ring.hpp"
+#include "common/spsc_ring.hpp"
 
 namespace rays::daemon {
 

@@ -6,7 +6,7 @@
 #include <cstdarg>
 
 #include "daemon/log.hpp"
-#include "daemon/spsc_ring.hpp"
+#include "common/spsc_ring.hpp"
 
 namespace rays::daemon {
 

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <type_traits>
 
-namespace rays::daemon {
+namespace rays {
 
 template <class T, std::size_t N>
 class SpscRing {
@@ -39,4 +39,4 @@ private:
     alignas(64) std::atomic<std::size_t> tail_{0};
 };
 
-}  // namespace rays::daemon
+}  // namespace rays

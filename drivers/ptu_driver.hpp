@@ -67,6 +67,14 @@ public:
     // Stops both axes and disables them; always safe to call, also after a failure. May block.
     virtual void deactivate() = 0;
 
+    // Starts homing both axes (a unit with limit switches or an index finds its zero; afterwards
+    // AxisState::homed is true). Non-blocking; progress shows in read(). Units that know their
+    // absolute position report homed from the start and succeed at once.
+    virtual DriverStatus home(TimePoint now) {
+        (void)now;
+        return DriverStatus::failure("this unit cannot home");
+    }
+
     // Cyclic, from the frame loop: hands over the newest command. Non-blocking.
     virtual DriverStatus write(const PtuCommand& command, TimePoint now) = 0;
     // Cyclic, from the frame loop: the newest state the unit reported. Non-blocking.

@@ -40,6 +40,12 @@ void PtuLimiter::deactivate() {
     forget_all();
 }
 
+DriverStatus PtuLimiter::home(TimePoint now) {
+    const DriverStatus status = driver_.home(now);
+    forget_all();
+    return status;
+}
+
 DriverStatus PtuLimiter::write(const PtuCommand& command, TimePoint now) {
     last_write_ = now;
     written_ = true;

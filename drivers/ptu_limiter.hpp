@@ -69,6 +69,8 @@ public:
     DriverStatus configure() override { return driver_.configure(); }
     DriverStatus activate() override;
     void deactivate() override;
+    // Passes homing on; the axes are held until the unit reports them at rest again.
+    DriverStatus home(TimePoint now) override;
     // Shapes the command as described above and passes it on; remembers `now` for command_stale.
     DriverStatus write(const PtuCommand& command, TimePoint now) override;
     // Passes the driver's state through and keeps it (with its stamp) for the prediction.

@@ -59,6 +59,8 @@ public:
     DriverStatus configure() override;  // fails while active
     DriverStatus activate() override;   // fails before configure
     void deactivate() override;         // halts both axes (ramp to rest at max_accel)
+    // The simulated unit knows its absolute angles: always homed, homing succeeds at once.
+    DriverStatus home(TimePoint) override { return DriverStatus::success(); }
     DriverStatus write(const PtuCommand& command, TimePoint now) override;  // fails unless active and fault-free
     DriverStatus read(PtuState& state, TimePoint now) override;             // fails before configure
 

@@ -20,6 +20,7 @@
 #include "daemon/request_handler.hpp"
 #include "daemon/service_notifier.hpp"
 #include "daemon/v4l2_source.hpp"
+#include "drivers/calibrated_ptu.hpp"
 #include "drivers/mock/mock_ptu.hpp"
 
 namespace rays::daemon {
@@ -47,6 +48,11 @@ ptu::MockPtuConfig mock_ptu_config(const MockPtuSettings& mock) {
     config.latency_s = mock.latency_ms / 1000.0;
     config.record_capacity = mock.record_path.empty() ? 16 : 262'144;
     return config;
+}
+
+std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const PtuSettings& ptu) {
+    constexpr double kDegToRad = std::numbers::pi / 180.0;
+    return {{{ptu.pan_inverted, ptu.pan_zero_deg * kDegToRad}, {ptu.tilt_inverted, ptu.tilt_zero_deg * kDegToRad}}};
 }
 
 // mock.record_path: every command the simulated unit received, for tests and diagnosis.
@@ -89,12 +95,14 @@ struct Daemon::Running {
     Running(const DaemonConfig& config, FrameSource& source, ptu::PtuDriver& driver, FrameObserver* observer,
             const Clock& clock)
         : channels(config.camera.queue_frames),
-          limiter(driver),
+          calibrated(driver, calibration_of(config.ptu)),
+          limiter(calibrated),
           loop(config, channels, limiter, notifier, clock, observer),
           capture(source, channels) {}
 
     ServiceNotifier notifier;
     LoopChannels channels;
+    ptu::CalibratedPtu calibrated;
     ptu::PtuLimiter limiter;
     FrameLoop loop;
     CaptureThread capture;

@@ -58,6 +58,11 @@ struct PtuMotion {                       // [ptu] tunables: limits enforced abov
 
 struct PtuSettings {                     // [ptu]
     std::string driver = "mock";         // fixed at start: mock (real drivers: their own issue)
+    bool pan_inverted = false;           // fixed at start: the unit's axis turns the other way
+    bool tilt_inverted = false;
+    double pan_zero_deg = 0.0;           // fixed at start: the unit's angle where the rig's is 0
+    double tilt_zero_deg = 0.0;
+    bool require_homing = false;         // fixed at start: no motion until the unit reports homed
     PtuMotion motion;
 };
 

@@ -62,7 +62,15 @@ void add_control(ParamTable<DaemonConfig>& table) {
 
 void add_ptu(ParamTable<DaemonConfig>& table) {
     table.section("ptu", ParamKind::Capacity, &DaemonConfig::ptu)
-        .add_choice("driver", &PtuSettings::driver, "mock", "pan/tilt unit driver (mock: simulated unit)");
+        .add_choice("driver", &PtuSettings::driver, "mock", "pan/tilt unit driver (mock: simulated unit)")
+        .add("pan_inverted", &PtuSettings::pan_inverted, "the unit's pan axis turns left for positive angles")
+        .add("tilt_inverted", &PtuSettings::tilt_inverted, "the unit's tilt axis turns down for positive angles")
+        .add("pan_zero_deg", &PtuSettings::pan_zero_deg, "deg", -360, 360,
+             "the unit's pan angle when the rig looks straight ahead")
+        .add("tilt_zero_deg", &PtuSettings::tilt_zero_deg, "deg", -180, 180,
+             "the unit's tilt angle when the rig looks level")
+        .add("require_homing", &PtuSettings::require_homing,
+             "no motion until the unit reports both axes homed ('raysctl ptu home')");
     table.section("ptu", ParamKind::Tunable, [](DaemonConfig& config) -> auto& { return config.ptu.motion; })
         .add("pan_min_deg", &PtuMotion::pan_min_deg, "deg", -360, 360, "soft limit: lowest pan angle")
         .add("pan_max_deg", &PtuMotion::pan_max_deg, "deg", -360, 360, "soft limit: highest pan angle")

@@ -51,6 +51,7 @@ FrameLoop::FrameLoop(const DaemonConfig& config, LoopChannels& channels, ptu::Pt
       observer_(observer),
       tracker_(config.tracker, clock),
       tunables_(loop_tunables(config)),
+      require_homing_(config.ptu.require_homing),
       frame_timeout_(std::chrono::duration_cast<std::chrono::nanoseconds>(Seconds(config.camera.frame_timeout_s))),
       wait_(std::chrono::duration_cast<std::chrono::nanoseconds>(std::min(kLongestWait, Seconds(config.camera.frame_timeout_s)))),
       started_(clock.now()) {
@@ -101,6 +102,8 @@ void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
         break;
     case CommandKind::Goto: manual_ = position_command(command.a, command.b); break;
     case CommandKind::Home:
+        if (ptu::DriverStatus homing = ptu_.home(now); !homing.ok)
+            channels_.log.log(Priority::Notice, "ptu home: %s; moving to the home angles", homing.what());
         manual_ = position_command(tunables_.ptu.home_pan_deg * kDegToRad, tunables_.ptu.home_tilt_deg * kDegToRad);
         break;
     case CommandKind::Park:
@@ -147,6 +150,8 @@ void FrameLoop::track_frame(TimePoint now) {
 
 ptu::PtuCommand FrameLoop::next_command(TimePoint now) const {
     if (!driver_status_.ok) return ptu::PtuCommand::stop();
+    if (require_homing_ && !(unit_.axes[0].homed && unit_.axes[1].homed))
+        return ptu::PtuCommand::stop();  // the driver's own homing moves the axes meanwhile
     if (mode_ == ControlMode::Manual) {  // a person steers, camera or not
         if (jogging_ && now > jog_expires_) return ptu::PtuCommand::stop();
         return manual_;

@@ -48,6 +48,7 @@ private:
     FrameObserver* observer_;
     Tracker tracker_;
     LoopTunables tunables_;
+    bool require_homing_;
     std::chrono::nanoseconds frame_timeout_;  // no frame for this long: the axes stop
     std::chrono::nanoseconds wait_;           // longest wait for a frame: the unit gets a write this often
     TimePoint started_;

@@ -95,13 +95,15 @@ std::string ListeningSocket::describe() const {
 }
 
 CommandServer::CommandServer(const SocketSettings& settings, ListeningSocket& socket, int signal_fd,
-                             LoopChannels& channels, RequestHandler& handler, std::function<void()> reload)
+                             LoopChannels& channels, RequestHandler& handler, std::function<void()> reload,
+                             std::function<void()> housekeeping)
     : settings_(settings),
       socket_(socket),
       signal_fd_(signal_fd),
       channels_(channels),
       handler_(handler),
-      reload_(std::move(reload)) {
+      reload_(std::move(reload)),
+      housekeeping_(std::move(housekeeping)) {
     clients_.reserve(static_cast<std::size_t>(settings.max_clients));
 }
 
@@ -129,6 +131,7 @@ void CommandServer::run() {
         }
         std::erase_if(clients_, [](const Client& client) { return client.fd < 0; });
         if (fds[0].revents & POLLIN) accept_clients();
+        housekeeping_();
     }
     channels_.stop.store(true);
     channels_.frames.wake();

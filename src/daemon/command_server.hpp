@@ -34,9 +34,10 @@ private:
 
 class CommandServer {
 public:
-    // `reload` re-reads the config file (SIGHUP); `signal_fd` delivers SIGHUP, SIGTERM and SIGINT.
+    // `reload` re-reads the config file (SIGHUP); `signal_fd` delivers SIGHUP, SIGTERM and SIGINT;
+    // `housekeeping` runs after every wake-up (at least every 200 ms).
     CommandServer(const SocketSettings& settings, ListeningSocket& socket, int signal_fd, LoopChannels& channels,
-                  RequestHandler& handler, std::function<void()> reload);
+                  RequestHandler& handler, std::function<void()> reload, std::function<void()> housekeeping);
 
     // Serves until SIGTERM/SIGINT or channels.stop; sets channels.stop on the way out.
     void run();
@@ -65,6 +66,7 @@ private:
     LoopChannels& channels_;
     RequestHandler& handler_;
     std::function<void()> reload_;
+    std::function<void()> housekeeping_;
     std::vector<Client> clients_;
 };
 

@@ -175,7 +175,19 @@ int Daemon::run() {
         if (!handler.push_tunables()) log(Priority::Err, "reload: the frame loop's command queue is full; try again");
         else log(Priority::Notice, "reloaded tunables from %s", config_path_.c_str());
     };
-    CommandServer server(config_.socket, *socket, signal_fd, r.channels, handler, reload);
+    std::string service_status;
+    auto report_status = [&] {  // STATUS= for systemctl status, sent when it changes
+        std::string now_status;
+        r.channels.status.read([&](const LoopStatus& s) {
+            now_status = std::string(to_string(s.last.state)) + ", " + to_string(s.mode) + " control, camera " +
+                         (s.camera_connected ? "connected" : "AWAY") + ", PTU " + parts_.ptu->name() +
+                         (s.ptu_fault ? std::string(" FAULT: ") + s.ptu_message.data() : std::string(" ok"));
+        });
+        if (now_status == service_status) return;
+        service_status = now_status;
+        r.notifier.status(service_status.c_str());
+    };
+    CommandServer server(config_.socket, *socket, signal_fd, r.channels, handler, reload, report_status);
 
     std::string ready = "tracking: " + parts_.source->describe() + ", PTU " + parts_.ptu->name() + ", " +
                         socket->describe();

@@ -140,6 +140,7 @@ TEST_CASE("raysd tells systemd READY=1 once serving, feeds the watchdog, and sto
     CHECK(wait_for_socket(s.socket, 1s));  // bound before READY
     CHECK(notify.received().find("STATUS=tracking: replay") != std::string::npos);
     REQUIRE(notify.wait_for("WATCHDOG=1", 2s));
+    CHECK(notify.wait_for("STATUS=tracking, automatic control, camera connected, PTU mock ok", 5s));
     daemon.signal(SIGTERM);
     CHECK(daemon.wait(3s) == 0);
     CHECK(notify.wait_for("STOPPING=1", 1s));

@@ -64,6 +64,8 @@ bool CanIoDriver::wait_for(bool IoReport::*flag, ptu::DriverStatus& failure) {
             failure = report.status;
         });
         if (done) return true;
+        // configure() checks that the drives answer: their first failure is the answer.
+        if (!failure.ok && flag == &IoReport::configured) return false;
         if (MonoClock::now() >= deadline) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }

@@ -44,6 +44,12 @@ void CanopenAxis::start(TimePoint now) {
     last_controlword_ = 0;
 }
 
+void CanopenAxis::forget_faults() {
+    status_ = ptu::DriverStatus::success();
+    drive_fault_ = false;
+    backoff_s_ = 0.5;
+}
+
 void CanopenAxis::fail(TimePoint now, const char* format, ...) {
     char text[120];
     int used = std::snprintf(text, sizeof text, "canopen: %s (node %d): ", label_, node_);

@@ -18,6 +18,7 @@ public:
     CanopenAxis(const char* label, int node, double counts_per_rad, const CanopenSettings& settings);
 
     void start(TimePoint now);  // from scratch: pre-operational, then the configuration plan
+    void forget_faults();       // a new session (configure): earlier failures no longer count
     bool on_frame(const can_frame& frame, TimePoint now, can::FrameSink& bus);  // false: not this drive's frame
     void lose(const char* why, TimePoint now);            // a fault from outside (bus-off): retry later
     // `enable`: bring the drive to Operation enabled and apply `command` (a stop otherwise).

@@ -39,7 +39,10 @@ ptu::DriverStatus CanopenDriver::home(TimePoint now) {
 void CanopenDriver::io_start(TimePoint now) {
     bus_off_ = false;
     next_heartbeat_ = now;
-    for (CanopenAxis& axis : axes_) axis.start(now);
+    for (CanopenAxis& axis : axes_) {
+        axis.forget_faults();
+        axis.start(now);
+    }
 }
 
 void CanopenDriver::io_frame(const can_frame& frame, TimePoint now) {

@@ -7,9 +7,10 @@
 namespace rays::gpio {
 
 // The highest step rate the pulse thread is configured for, per axis; faster configs are refused.
-// Measured here (test_gpio_step_rate): both axes at 20 kHz at once are sustained against the fake
-// lines; a real chip adds one ioctl per edge (a few µs), which this still leaves room for.
-constexpr int kMaxStepRateHz = 20000;
+// Measured here (test_gpio_step_rate, 2 shared cores, SCHED_FIFO): both axes at 20 kHz at once reached
+// only about 18.5 kHz with re-bases, so the configured ceiling is half that; a real chip adds one
+// ioctl per edge (a few µs), which this leaves room for.
+constexpr int kMaxStepRateHz = 10000;
 
 struct GpioSettings {
     std::string chip = "gpiochip0";

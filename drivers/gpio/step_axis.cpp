@@ -8,6 +8,12 @@ namespace {
 
 constexpr double kSlowest = 0.01;  // steps/s; slower wanted speeds are zero
 
+// The speed one step of braking leaves; 0 when that is rounding (w² = 2·accel up to the last bits).
+double braked(double speed, double accel) {
+    const double rest = speed * speed - 2.0 * accel;
+    return rest > 1e-9 * speed * speed ? std::sqrt(rest) : 0.0;
+}
+
 TimePoint::duration seconds(double s) {
     return std::chrono::duration_cast<TimePoint::duration>(std::chrono::duration<double>(s));
 }
@@ -16,7 +22,7 @@ TimePoint::duration seconds(double s) {
 
 double speed_toward(double speed, double wanted, double accel) {
     const double up = std::sqrt(speed * speed + 2.0 * accel);
-    const double down = std::sqrt(std::max(0.0, speed * speed - 2.0 * accel));
+    const double down = braked(speed, accel);
     if (wanted < kSlowest) return down;
     if (speed < wanted) return std::min(up, wanted);
     if (speed > wanted) return std::max(down, wanted);
@@ -24,7 +30,7 @@ double speed_toward(double speed, double wanted, double accel) {
 }
 
 double speed_to_target(double speed, long remaining, double max_speed, double accel) {
-    const double down = std::sqrt(std::max(0.0, speed * speed - 2.0 * accel));
+    const double down = braked(speed, accel);
     if (remaining <= 0) return down;  // on or past the target: brake, come back from rest
     const double up = std::sqrt(speed * speed + 2.0 * accel);
     // From w at the next step, stopping within `remaining` steps needs w² ≤ 2·accel·remaining.

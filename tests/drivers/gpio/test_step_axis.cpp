@@ -1,0 +1,124 @@
+// StepAxis and Homing on virtual time (no thread, no lines): exact step counts, speeds and intervals.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "drivers/gpio/homing.hpp"
+#include "drivers/gpio/step_axis.hpp"
+
+using namespace rays;
+using namespace rays::gpio;
+
+namespace {
+
+struct Run {
+    long steps = 0;
+    double max_rate = 0.0;
+    double max_accel = 0.0;
+};
+
+// Runs the axis under `goal` from `t` for `seconds`, acting on every edge exactly when due.
+Run simulate(StepAxis& axis, const AxisGoal& goal, TimePoint& t, double seconds) {
+    Run run;
+    const TimePoint end = t + std::chrono::duration_cast<TimePoint::duration>(std::chrono::duration<double>(seconds));
+    TimePoint last{};
+    double last_rate = 0.0;
+    bool have_last = false;
+    double last_interval = 0.0;
+    for (;;) {
+        axis.plan(goal, t);
+        if (axis.action() == StepAxis::Action::None || axis.due() > end) break;
+        t = std::max(t, axis.due());
+        if (axis.action() == StepAxis::Action::SetDir) {
+            axis.dir_set(axis.wanted_direction(), t);
+            continue;
+        }
+        axis.stepped(t);
+        ++run.steps;
+        if (have_last) {
+            const double interval = std::chrono::duration<double>(t - last).count();
+            const double rate = 1.0 / interval;
+            run.max_rate = std::max(run.max_rate, rate);
+            if (last_interval > 0.0 && last_rate > 0.0)
+                run.max_accel = std::max(run.max_accel, std::abs(rate - last_rate) / (0.5 * (interval + last_interval)));
+            last_rate = rate;
+            last_interval = interval;
+        }
+        last = t;
+        have_last = true;
+    }
+    t = end;
+    return run;
+}
+
+}  // namespace
+
+TEST_CASE("StepAxis: a position move is a trapezoid that lands exactly", "[gpio][step_axis]") {
+    AxisKinematics k;
+    k.accel = 10000.0;
+    k.max_speed = 2000.0;
+    StepAxis axis(k, 5000.0, 5e-6);
+    TimePoint t{};
+    const Run run = simulate(axis, AxisGoal{AxisGoal::Kind::Position, 0.0, 1234, 2000.0}, t, 3.0);
+    CHECK(axis.position() == 1234);
+    CHECK(run.steps == 1234);
+    CHECK(axis.at_rest());
+    CHECK(run.max_rate <= 2000.0 * 1.0001);
+    CHECK(run.max_accel <= 10000.0 * 1.01);
+    CHECK(run.max_accel >= 9000.0);
+    // A short move never reaches top speed and still lands.
+    simulate(axis, AxisGoal{AxisGoal::Kind::Position, 0.0, 1200, 2000.0}, t, 1.0);
+    CHECK(axis.position() == 1200);
+}
+
+TEST_CASE("StepAxis: velocity ramps, holds and reverses through rest", "[gpio][step_axis]") {
+    AxisKinematics k;
+    k.accel = 4000.0;
+    k.max_speed = 1000.0;
+    StepAxis axis(k, 2000.0, 5e-6);
+    TimePoint t{};
+    Run run = simulate(axis, AxisGoal{AxisGoal::Kind::Velocity, 5000.0, 0, 1000.0}, t, 1.0);  // capped at max_speed
+    CHECK(run.max_rate <= 1000.0 * 1.0001);
+    CHECK(axis.velocity() == Approx(1000.0));
+    // 0.25 s ramp (125 steps) then 0.75 s at 1000/s: 875 steps.
+    CHECK(run.steps == Approx(875.0).margin(2.0));
+    run = simulate(axis, AxisGoal{AxisGoal::Kind::Velocity, -500.0, 0, 1000.0}, t, 1.0);
+    CHECK(axis.velocity() == Approx(-500.0));
+    CHECK(run.max_accel <= 4000.0 * 1.01);
+    simulate(axis, AxisGoal::stop(), t, 1.0);
+    CHECK(axis.at_rest());
+}
+
+TEST_CASE("Homing: seek, release, back off, finish", "[gpio][homing]") {
+    AxisKinematics k;
+    k.accel = 10000.0;
+    k.max_speed = 2000.0;
+    k.homing_speed = 500.0;
+    k.backoff_steps = 50;
+    StepAxis axis(k, 5000.0, 0.0);
+    Homing homing(k, -1, 10.0);
+    TimePoint t{};
+    homing.start(t);
+    bool finished = false;
+    for (int i = 0; i < 20000 && !finished; ++i) {
+        const bool on_switch = axis.position() <= -100;
+        const Homing::Step step = homing.update(on_switch, false, axis, t);
+        REQUIRE(step.failure == nullptr);
+        finished = step.finished;
+        simulate(axis, step.goal, t, 0.0005);
+    }
+    REQUIRE(finished);
+    CHECK(axis.position() == -99 + 50);
+    CHECK_FALSE(homing.running());
+}
+
+TEST_CASE("Homing: the opposite switch and the timeout fail it", "[gpio][homing]") {
+    AxisKinematics k;
+    k.homing_speed = 100.0;
+    StepAxis axis(k, 5000.0, 0.0);
+    Homing homing(k, 1, 1.0);
+    homing.start(TimePoint{});
+    CHECK(homing.update(false, true, axis, TimePoint{}).failure != nullptr);
+    homing.start(TimePoint{});
+    CHECK(homing.update(false, false, axis, TimePoint{} + std::chrono::seconds(2)).failure != nullptr);
+}

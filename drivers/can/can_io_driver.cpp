@@ -57,11 +57,13 @@ void CanIoDriver::deactivate() { stop_thread(); }
 
 bool CanIoDriver::wait_for(bool IoReport::*flag, ptu::DriverStatus& failure) {
     const TimePoint deadline = MonoClock::now() + seconds(timing_.lifecycle_timeout_s);
+    ptu::DriverStatus waiting;
     for (;;) {
         bool done = false;
         report_.read([&](const IoReport& report) {
             done = report.*flag;
             failure = report.status;
+            waiting = report.waiting;
         });
         if (done) return true;
         // configure() checks that the drives answer: their first failure is the answer.
@@ -69,6 +71,7 @@ bool CanIoDriver::wait_for(bool IoReport::*flag, ptu::DriverStatus& failure) {
         if (MonoClock::now() >= deadline) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
+    if (failure.ok && !waiting.ok) failure = waiting;
     if (failure.ok) {
         char text[120];
         std::snprintf(text, sizeof text, "%s: the drives did not become %s within %.1f s", name(),

@@ -33,6 +33,7 @@ struct IoReport {
     ptu::DriverStatus status;
     bool configured = false;  // every axis answered and took its configuration
     bool enabled = false;     // every axis is enabled and fault-free
+    ptu::DriverStatus waiting;  // what configure/activate still wait for, as their timeout message
 };
 
 class CanIoDriver : public ptu::PtuDriver {

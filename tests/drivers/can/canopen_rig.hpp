@@ -14,6 +14,16 @@
 
 namespace rays::test {
 
+// Polls `done` for up to `seconds`: the simulated drives act on their own thread.
+inline bool eventually(const std::function<bool()>& done, double seconds = 1.0) {
+    const auto end = MonoClock::now() + std::chrono::duration<double>(seconds);
+    while (!done()) {
+        if (MonoClock::now() >= end) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return true;
+}
+
 inline canopen::CanopenSettings fast_canopen_settings() {
     canopen::CanopenSettings s;
     s.master_heartbeat_ms = 20;

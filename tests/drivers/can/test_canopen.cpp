@@ -95,8 +95,10 @@ TEST_CASE("canopen: velocity commands move the drives and their positions come b
     CHECK(rig.state.axes[0].position_rad == Approx(rig.pan.position_rad()).margin(0.02));
     CHECK(rig.state.axes[1].velocity_rad_s == Approx(-0.3).margin(0.01));
     rig.driver->deactivate();
-    CHECK(rig.pan.state() == DriveState::SwitchOnDisabled);  // quick stop on deactivate
-    CHECK(rig.pan.nmt_state() == static_cast<std::uint8_t>(NmtState::PreOperational));
+    CHECK(rays::test::eventually([&] {  // quick stop, then pre-operational
+        return rig.pan.state() == DriveState::SwitchOnDisabled &&
+               rig.pan.nmt_state() == static_cast<std::uint8_t>(NmtState::PreOperational);
+    }));
 }
 
 TEST_CASE("canopen: position commands use profile position with new set-point and change immediately", "[canopen]") {

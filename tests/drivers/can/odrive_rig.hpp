@@ -1,0 +1,85 @@
+// An ODrive driver on an in-memory bus with two simulated ODrive axes (pan node 0, tilt node 1).
+#pragma once
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "drivers/can/odrive/odrive_driver.hpp"
+#include "drivers/can/odrive/odrive_protocol.hpp"
+#include "drivers/can/sim/loopback_bus.hpp"
+#include "drivers/can/sim/odrive_sim_axis.hpp"
+
+namespace rays::test {
+
+inline odrive::OdriveSettings fast_odrive_settings() {
+    odrive::OdriveSettings s;
+    s.pan_motor_turns_per_axis_turn = 10.0;
+    s.tilt_motor_turns_per_axis_turn = 5.0;
+    s.heartbeat_timeout_ms = 100;
+    s.cycle_ms = 5;
+    s.command_timeout_s = 0.3;
+    s.lifecycle_timeout_s = 2.0;
+    return s;
+}
+
+inline odrive::OdriveSimConfig odrive_sim_config(int node, double ratio) {
+    odrive::OdriveSimConfig config;
+    config.node = node;
+    config.turns_per_rad = ratio / (2.0 * 3.141592653589793);
+    return config;
+}
+
+struct OdriveRig {
+    explicit OdriveRig(const odrive::OdriveSettings& s = fast_odrive_settings())
+        : settings(s),
+          pan(odrive_sim_config(s.pan_node_id, s.pan_motor_turns_per_axis_turn)),
+          tilt(odrive_sim_config(s.tilt_node_id, s.tilt_motor_turns_per_axis_turn)),
+          host(bus, {&pan, &tilt}),
+          driver_end(bus.add_endpoint()) {
+        std::string error;
+        driver = odrive::make_odrive_driver(settings, bus.transport_for(driver_end), clock, error);
+    }
+
+    bool run(const ptu::PtuCommand& command, double seconds) {
+        bool all_ok = true;
+        const auto end = MonoClock::now() + std::chrono::duration<double>(seconds);
+        while (MonoClock::now() < end) {
+            all_ok = driver->write(command, clock.now()).ok && all_ok;
+            all_ok = driver->read(state, clock.now()).ok && all_ok;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        return all_ok;
+    }
+
+    bool run_until(const ptu::PtuCommand& command, double seconds, const std::function<bool()>& done) {
+        const auto end = MonoClock::now() + std::chrono::duration<double>(seconds);
+        while (MonoClock::now() < end) {
+            status = driver->write(command, clock.now());
+            status = driver->read(state, clock.now());
+            if (done()) return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+        return false;
+    }
+
+    odrive::OdriveSettings settings;
+    SteadyClock clock;
+    can::LoopbackBus bus{clock};
+    odrive::OdriveSimAxis pan, tilt;
+    can::SimBusHost host;
+    can::LoopbackEndpoint& driver_end;
+    std::unique_ptr<ptu::PtuDriver> driver;
+    ptu::PtuState state;
+    ptu::DriverStatus status;
+};
+
+// Commands (cmd ids) the simulated axis received, in order.
+inline std::vector<odrive::Cmd> commands_received(const odrive::OdriveSimAxis& axis) {
+    std::vector<odrive::Cmd> out;
+    for (const auto& r : axis.received()) out.push_back(odrive::cmd_of(r.frame.can_id & CAN_SFF_MASK));
+    return out;
+}
+
+}  // namespace rays::test

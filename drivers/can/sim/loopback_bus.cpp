@@ -108,7 +108,9 @@ std::unique_ptr<CanTransport> LoopbackBus::transport_for(LoopbackEndpoint& endpo
 bool LoopbackBus::transmit(const LoopbackEndpoint& sender, const can_frame& frame) {
     std::lock_guard lock(mutex_);
     if (bus_off_) return false;
-    if (records_.size() < record_capacity_) records_.push_back(BusRecord{clock_.now(), frame, sender.number()});
+    const BusRecord record{clock_.now(), frame, sender.number()};
+    if (records_.size() < record_capacity_) records_.push_back(record);
+    if (observer_) observer_(record);
     for (const auto& endpoint : endpoints_)
         if (endpoint.get() != &sender) endpoint->deliver(frame);
     return true;
@@ -119,6 +121,11 @@ void LoopbackBus::broadcast_error(canid_t error_class) {
     frame.can_id = CAN_ERR_FLAG | error_class;
     frame.len = CAN_ERR_DLC;
     for (const auto& endpoint : endpoints_) endpoint->deliver(frame);
+}
+
+void LoopbackBus::set_observer(std::function<void(const BusRecord&)> observer) {
+    std::lock_guard lock(mutex_);
+    observer_ = std::move(observer);
 }
 
 void LoopbackBus::set_bus_off(bool off) {

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -73,6 +74,8 @@ public:
     LoopbackEndpoint& add_endpoint();
     std::unique_ptr<CanTransport> transport_for(LoopbackEndpoint& endpoint);  // a non-owning handle
 
+    // Called (under the bus lock, on the sender's thread) for every frame that goes onto the bus.
+    void set_observer(std::function<void(const BusRecord&)> observer);
     void set_bus_off(bool off);
     std::vector<BusRecord> records() const;  // a copy, for tests
     const Clock& clock() const { return clock_; }
@@ -88,6 +91,7 @@ private:
     std::vector<BusRecord> records_;
     std::size_t record_capacity_;
     bool bus_off_ = false;
+    std::function<void(const BusRecord&)> observer_;
 };
 
 }  // namespace rays::can

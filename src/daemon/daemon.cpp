@@ -15,6 +15,7 @@
 #include "daemon/command_server.hpp"
 #include "daemon/daemon_params.hpp"
 #include "daemon/log.hpp"
+#include "daemon/ptu_factory.hpp"
 #include "daemon/realtime.hpp"
 #include "daemon/replay_source.hpp"
 #include "daemon/request_handler.hpp"
@@ -39,16 +40,6 @@ struct LoopStart {
     RealtimeReport priority;
     RealtimeReport affinity;
 };
-
-ptu::MockPtuConfig mock_ptu_config(const MockPtuSettings& mock) {
-    constexpr double kDegToRad = std::numbers::pi / 180.0;
-    ptu::MockPtuConfig config;
-    config.max_velocity_rad_s = mock.max_velocity_deg_s * kDegToRad;
-    config.max_accel_rad_s2 = mock.max_accel_deg_s2 * kDegToRad;
-    config.latency_s = mock.latency_ms / 1000.0;
-    config.record_capacity = mock.record_path.empty() ? 16 : 262'144;
-    return config;
-}
 
 std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const PtuSettings& ptu) {
     constexpr double kDegToRad = std::numbers::pi / 180.0;
@@ -87,9 +78,6 @@ std::unique_ptr<FrameSource> open_frame_source(const CameraSettings& camera, con
     return V4l2Source::open(camera, clock, error);
 }
 
-std::unique_ptr<ptu::PtuDriver> make_ptu_driver(const DaemonConfig& config, const Clock& clock) {
-    return std::make_unique<ptu::MockPtu>(mock_ptu_config(config.mock), clock);
-}
 
 struct Daemon::Running {
     Running(const DaemonConfig& config, FrameSource& source, ptu::PtuDriver& driver, FrameObserver* observer,
@@ -126,7 +114,11 @@ int Daemon::run() {
         log(Priority::Err, "camera: %s", error.c_str());
         return 1;
     }
-    if (!parts_.ptu) parts_.ptu = make_ptu_driver(config_, clock_);
+    if (!parts_.ptu) parts_.ptu = make_ptu_driver(config_, clock_, error);
+    if (!parts_.ptu) {
+        log(Priority::Err, "ptu.driver %s: %s", config_.ptu.driver.c_str(), error.c_str());
+        return 1;
+    }
     RealtimeReport memory = lock_memory(config_.loop.lock_memory);
     if (memory.refused) log(Priority::Warning, "loop.lock_memory: %s", memory.text.c_str());
 

@@ -26,9 +26,6 @@ void block_daemon_signals();
 // The frame source [camera] describes; null with `error` when it cannot be opened.
 std::unique_ptr<FrameSource> open_frame_source(const CameraSettings& camera, const Clock& clock, std::string& error);
 
-// The driver [ptu] names, not yet configured.
-std::unique_ptr<ptu::PtuDriver> make_ptu_driver(const DaemonConfig& config, const Clock& clock);
-
 // Runs until SIGTERM/SIGINT (or request_stop() from another thread). Returns the exit status:
 // 0 after a clean stop, 1 when the camera, PTU or socket cannot be brought up.
 class Daemon {

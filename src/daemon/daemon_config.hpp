@@ -5,6 +5,11 @@
 #include <string>
 
 #include "core/tracker_config.hpp"
+#include "drivers/can/canopen/canopen_settings.hpp"
+#include "drivers/can/odrive/odrive_settings.hpp"
+#include "drivers/gpio/gpio_settings.hpp"
+#include "drivers/gpio/pwm_settings.hpp"
+#include "drivers/modbus/modbus_settings.hpp"
 
 namespace rays::daemon {
 
@@ -57,7 +62,7 @@ struct PtuMotion {                       // [ptu] tunables: limits enforced abov
 };
 
 struct PtuSettings {                     // [ptu]
-    std::string driver = "mock";         // fixed at start: mock (real drivers: their own issue)
+    std::string driver = "mock";         // fixed at start: mock | modbus | canopen | odrive | gpio-stepper | pwm-servo
     bool pan_inverted = false;           // fixed at start: the unit's axis turns the other way
     bool tilt_inverted = false;
     double pan_zero_deg = 0.0;           // fixed at start: the unit's angle where the rig's is 0
@@ -92,6 +97,11 @@ struct DaemonConfig {
     ControlSettings control;
     PtuSettings ptu;
     MockPtuSettings mock;
+    ptu::ModbusSettings modbus;
+    canopen::CanopenSettings canopen;
+    odrive::OdriveSettings odrive;
+    gpio::GpioSettings gpio;
+    gpio::PwmSettings pwm;
     SocketSettings socket;
     LogSettings log;
 };

@@ -5,6 +5,11 @@
 
 #include "config/config_engine.hpp"
 #include "config/config_table.hpp"
+#include "drivers/can/canopen/canopen_settings.hpp"
+#include "drivers/can/odrive/odrive_settings.hpp"
+#include "drivers/gpio/gpio_params.hpp"
+#include "drivers/gpio/pwm_params.hpp"
+#include "drivers/modbus/modbus_settings.hpp"
 
 namespace rays::daemon {
 namespace {
@@ -62,7 +67,8 @@ void add_control(ParamTable<DaemonConfig>& table) {
 
 void add_ptu(ParamTable<DaemonConfig>& table) {
     table.section("ptu", ParamKind::Capacity, &DaemonConfig::ptu)
-        .add_choice("driver", &PtuSettings::driver, "mock", "pan/tilt unit driver (mock: simulated unit)")
+        .add_choice("driver", &PtuSettings::driver, "mock|modbus|canopen|odrive|gpio-stepper|pwm-servo",
+                    "pan/tilt unit driver, configured in the section of the same name (mock: a simulated unit)")
         .add("pan_inverted", &PtuSettings::pan_inverted, "the unit's pan axis turns left for positive angles")
         .add("tilt_inverted", &PtuSettings::tilt_inverted, "the unit's tilt axis turns down for positive angles")
         .add("pan_zero_deg", &PtuSettings::pan_zero_deg, "deg", -360, 360,
@@ -126,6 +132,11 @@ ParamTable<DaemonConfig> build_daemon_params() {
     add_control(table);
     add_ptu(table);
     add_mock(table);
+    table.include(ptu::modbus_params(), &DaemonConfig::modbus);
+    table.include(canopen::canopen_params(), &DaemonConfig::canopen);
+    table.include(odrive::odrive_params(), &DaemonConfig::odrive);
+    table.include(gpio::gpio_params(), &DaemonConfig::gpio);
+    table.include(gpio::pwm_params(), &DaemonConfig::pwm);
     add_socket(table);
     add_log(table);
     table.add_rule(config::less_than("ptu.pan_min_deg", "ptu.pan_max_deg"));

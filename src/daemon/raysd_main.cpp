@@ -14,6 +14,7 @@
 #include "daemon/daemon.hpp"
 #include "daemon/daemon_params.hpp"
 #include "daemon/log.hpp"
+#include "daemon/ptu_factory.hpp"
 
 namespace {
 
@@ -34,7 +35,12 @@ void usage(std::FILE* out) {
 
 int stop_axes(const DaemonConfig& config) {
     rays::SteadyClock clock;
-    auto driver = make_ptu_driver(config, clock);
+    std::string error;
+    auto driver = make_ptu_driver(config, clock, error);
+    if (!driver) {
+        log(Priority::Err, "stop axes: ptu.driver %s: %s", config.ptu.driver.c_str(), error.c_str());
+        return 1;
+    }
     if (rays::ptu::DriverStatus status = driver->configure(); !status.ok) {
         log(Priority::Err, "stop axes: PTU %s: %s", driver->name(), status.what());
         return 1;

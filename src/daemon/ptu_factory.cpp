@@ -1,0 +1,37 @@
+#include "daemon/ptu_factory.hpp"
+
+#include <numbers>
+
+#include "drivers/can/canopen/canopen_driver.hpp"
+#include "drivers/can/odrive/odrive_driver.hpp"
+#include "drivers/gpio/gpio_stepper.hpp"
+#include "drivers/gpio/pwm_servo.hpp"
+#include "drivers/mock/mock_ptu.hpp"
+#include "drivers/modbus/modbus_ptu.hpp"
+
+namespace rays::daemon {
+namespace {
+
+ptu::MockPtuConfig mock_ptu_config(const MockPtuSettings& mock) {
+    constexpr double kDegToRad = std::numbers::pi / 180.0;
+    ptu::MockPtuConfig config;
+    config.max_velocity_rad_s = mock.max_velocity_deg_s * kDegToRad;
+    config.max_accel_rad_s2 = mock.max_accel_deg_s2 * kDegToRad;
+    config.latency_s = mock.latency_ms / 1000.0;
+    config.record_capacity = mock.record_path.empty() ? 16 : 262'144;
+    return config;
+}
+
+}  // namespace
+
+std::unique_ptr<ptu::PtuDriver> make_ptu_driver(const DaemonConfig& config, const Clock& clock, std::string& error) {
+    const std::string& driver = config.ptu.driver;
+    if (driver == "modbus") return ptu::make_modbus_driver(config.modbus, clock, error);
+    if (driver == "canopen") return canopen::make_canopen_driver(config.canopen, clock, error);
+    if (driver == "odrive") return odrive::make_odrive_driver(config.odrive, clock, error);
+    if (driver == "gpio-stepper") return gpio::make_gpio_stepper_driver(config.gpio, clock, error);
+    if (driver == "pwm-servo") return gpio::make_pwm_servo_driver(config.pwm, clock, error);
+    return std::make_unique<ptu::MockPtu>(mock_ptu_config(config.mock), clock);
+}
+
+}  // namespace rays::daemon

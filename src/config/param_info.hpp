@@ -33,11 +33,11 @@ struct ParamInfo {
     std::string name;  // "section.key", e.g. "rays.alpha" is key alpha under [rays]
     ParamType type = ParamType::Double;
     ParamKind kind = ParamKind::Tunable;
-    std::string_view unit;  // "px", "grey/px", ... or "" for a plain number (unit, doc, choices: literals)
+    std::string_view unit;  // "px", "grey/px", ... or "" for a plain number (unit and choices: literals)
     double min = 0.0;       // inclusive range; numbers only
     double max = 0.0;
     ParamValue default_value;  // read from the settings struct's default member initialiser
-    std::string_view doc;      // one line
+    std::string doc;           // one line (owned: tables may build it, e.g. per axis)
     std::string_view choices;  // Choice only: the accepted words, separated by '|' ("v4l2|replay")
 
     std::string_view section() const { return std::string_view(name).substr(0, name.find('.')); }

@@ -69,7 +69,7 @@ public:
         template <class T>
         Section& add(std::string_view key, T Part::*member, std::string_view unit, double min, double max,
                      std::string_view doc) {
-            ParamInfo info{name_ + "." + std::string(key), param_type_of<T>(), kind_, unit, min, max, {}, doc, {}};
+            ParamInfo info{name_ + "." + std::string(key), param_type_of<T>(), kind_, unit, min, max, {}, std::string(doc), {}};
             table_.add(std::move(info), FieldAccess<Root, T>([part = part_, member](Root& root) -> T& {
                            return part(root).*member;
                        }));

@@ -12,6 +12,7 @@ const char* const kAxisNames[kAxes] = {"pan", "tilt"};
 
 AxisRegisters custom_axis(const ModbusAxisSettings& s) {
     AxisRegisters axis;
+    axis.slave = s.slave;
     axis.velocity = s.velocity_register;
     axis.position = s.position_register;
     axis.actual_position = s.actual_position_register;

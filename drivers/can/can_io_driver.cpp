@@ -21,6 +21,10 @@ void CanIoDriver::stop_thread() {
     transport_->wake();
     if (thread_.joinable()) thread_.join();
     transport_->close();
+    report_.publish([](IoReport& report) {  // stopped: nothing is enabled any more
+        report.enabled = false;
+        for (ptu::AxisState& axis : report.state.axes) axis.enabled = false;
+    });
 }
 
 ptu::DriverStatus CanIoDriver::configure() {

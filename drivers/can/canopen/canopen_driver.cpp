@@ -27,7 +27,7 @@ CanopenDriver::CanopenDriver(const CanopenSettings& settings, std::unique_ptr<ca
 CanopenDriver::~CanopenDriver() { stop_thread(); }
 
 double CanopenDriver::command_latency_s() const {
-    return settings_.cycle_ms / 1000.0 + settings_.tpdo_period_ms / 1000.0;  // wake-up to RPDO, TPDO age
+    return settings_.cycle_ms / 1000.0;  // write() wakes the I/O thread; at worst the next cycle sends it
 }
 
 ptu::DriverStatus CanopenDriver::home(TimePoint now) {

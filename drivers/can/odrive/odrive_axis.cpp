@@ -137,7 +137,8 @@ void OdriveAxis::cycle(const ptu::AxisCommand& command, bool enable, TimePoint n
 }
 
 void OdriveAxis::stop(can::FrameSink& bus) {
-    if (phase_ == Phase::Running || phase_ == Phase::Arming) {
+    // Also an axis left in closed loop by an earlier run (raysd --stop-axes: configure, stop, deactivate).
+    if (phase_ == Phase::Running || phase_ == Phase::Arming || axis_state_ == kAxisClosedLoop) {
         if (mode_ != ptu::CommandMode::Velocity)
             bus.send_frame(set_controller_mode(node_, kVelocityControl, kInputPassthrough));
         bus.send_frame(set_input_vel(node_, 0.0f));

@@ -22,7 +22,7 @@ public:
     bool on_frame(const can_frame& frame, TimePoint now);
     void lose(const char* why, TimePoint now);
     void cycle(const ptu::AxisCommand& command, bool enable, TimePoint now, can::FrameSink& bus);
-    void stop(can::FrameSink& bus);  // zero velocity, then idle
+    void stop(can::FrameSink& bus);  // zero velocity, then idle (an axis in closed loop, whoever armed it)
 
     bool configured() const { return phase_ != Phase::Waiting; }
     bool enabled() const { return phase_ == Phase::Running && status_.ok; }

@@ -24,18 +24,19 @@ inline odrive::OdriveSettings fast_odrive_settings() {
     return s;
 }
 
-inline odrive::OdriveSimConfig odrive_sim_config(int node, double ratio) {
+inline odrive::OdriveSimConfig odrive_sim_config(int node, double ratio, double watchdog_timeout_s = 0.1) {
     odrive::OdriveSimConfig config;
+    config.watchdog_timeout_s = watchdog_timeout_s;
     config.node = node;
     config.turns_per_rad = ratio / (2.0 * 3.141592653589793);
     return config;
 }
 
 struct OdriveRig {
-    explicit OdriveRig(const odrive::OdriveSettings& s = fast_odrive_settings())
+    explicit OdriveRig(const odrive::OdriveSettings& s = fast_odrive_settings(), double watchdog_timeout_s = 0.1)
         : settings(s),
-          pan(odrive_sim_config(s.pan_node_id, s.pan_motor_turns_per_axis_turn)),
-          tilt(odrive_sim_config(s.tilt_node_id, s.tilt_motor_turns_per_axis_turn)),
+          pan(odrive_sim_config(s.pan_node_id, s.pan_motor_turns_per_axis_turn, watchdog_timeout_s)),
+          tilt(odrive_sim_config(s.tilt_node_id, s.tilt_motor_turns_per_axis_turn, watchdog_timeout_s)),
           host(bus, {&pan, &tilt}),
           driver_end(bus.add_endpoint()) {
         std::string error;

@@ -175,3 +175,21 @@ TEST_CASE("odrive: the factory and the parameter table", "[odrive]") {
     CHECK(table.find("odrive.heartbeat_timeout_ms")->info.unit == "ms");
     for (const auto& section : table.sections()) CHECK(section == "odrive");
 }
+
+TEST_CASE("odrive: raysd --stop-axes (configure, stop, deactivate) idles an axis a killed run left moving", "[odrive]") {
+    auto settings = rays::test::fast_odrive_settings();
+    OdriveRig rig(settings, 5.0);  // a long ODrive watchdog: the stop must come from the stopper
+    bring_up(rig);
+    CHECK(rig.run(velocities(0.5, 0.5), 0.2));
+    rig.driver_end.mute(true);  // killed: its last frames never arrive
+    rig.driver.reset();
+    REQUIRE(rig.pan.velocity_rad_s() == Approx(0.5).margin(1e-3));
+    std::string error;
+    auto stopper = make_odrive_driver(settings, rig.bus.transport_for(rig.bus.add_endpoint()), rig.clock, error);
+    REQUIRE(stopper->configure().ok);
+    (void)stopper->write(ptu::PtuCommand::stop(), rig.clock.now());
+    stopper->deactivate();
+    CHECK(rays::test::eventually([&] { return rig.pan.axis_state() == kAxisIdle && rig.tilt.axis_state() == kAxisIdle; }));
+    CHECK(rays::test::eventually([&] { return rig.pan.velocity_rad_s() == 0.0; }));
+    CHECK(rig.pan.axis_error() == 0);  // idled by the command, not by the watchdog
+}

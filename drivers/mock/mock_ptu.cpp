@@ -78,7 +78,7 @@ DriverStatus MockPtu::read(PtuState& state, TimePoint now) {
 void MockPtu::inject_fault(Axis axis, const char* reason) {
     std::lock_guard lock(mutex_);
     const auto index = static_cast<std::size_t>(axis);
-    axes_[index].halt(clock_.now());
+    for (AxisDynamics& each : axes_) each.halt(clock_.now());  // as a drive should: the other axis stops too
     faulted_[index] = true;
     std::array<char, sizeof(fault_.message)> text{};
     std::snprintf(text.data(), text.size(), "mock: %s axis fault: %s", axis == Axis::Pan ? "pan" : "tilt",

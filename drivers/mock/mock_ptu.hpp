@@ -65,7 +65,7 @@ public:
     DriverStatus read(PtuState& state, TimePoint now) override;             // fails before configure
 
     // From now until clear_fault(): read() reports the axis faulted and disabled, write() fails with
-    // `reason` and the axis halts.
+    // `reason`, and both axes halt (a fault on one axis stops the other).
     void inject_fault(Axis axis, const char* reason);
     void clear_fault();
 

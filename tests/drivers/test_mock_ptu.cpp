@@ -126,7 +126,7 @@ TEST_CASE("MockPtu reports the dynamics' state at the time read, latency include
     CHECK(state.axes[0].velocity_rad_s == Approx(0.5));
 }
 
-TEST_CASE("MockPtu stops a faulted axis, refuses writes and recovers when cleared", "[mock]") {
+TEST_CASE("MockPtu stops both axes on a fault, refuses writes and recovers when cleared", "[mock]") {
     ManualClock clock;
     MockPtu ptu(quick_config(), clock);
     REQUIRE(ptu.configure().ok);
@@ -144,7 +144,7 @@ TEST_CASE("MockPtu stops a faulted axis, refuses writes and recovers when cleare
     CHECK_FALSE(state.axes[1].enabled);
     CHECK(state.axes[1].velocity_rad_s == 0.0);
     CHECK_FALSE(state.axes[0].fault);
-    CHECK(state.axes[0].velocity_rad_s == 1.0);  // the refused write changed nothing
+    CHECK(state.axes[0].velocity_rad_s == 0.0);  // the healthy axis was stopped as well
 
     ptu.clear_fault();
     REQUIRE(ptu.write(velocities(0.0, -1.0), at_seconds(2.0)).ok);

@@ -165,6 +165,15 @@ std::string changed_capacities(const DaemonConfig& a, const DaemonConfig& b) {
     return names;
 }
 
+DaemonConfig rig_template() {
+    DaemonConfig config;
+    config.ptu.driver = "modbus";
+    config.modbus.transport = "rtu";
+    config.modbus.device = "/dev/ttyUSB0";
+    config.modbus.preset = "uumotor-svd48v";
+    return config;
+}
+
 void copy_tunables(const DaemonConfig& from, DaemonConfig& to) {
     for (const config::Param<DaemonConfig>& param : daemon_params().params())
         if (param.info.kind == ParamKind::Tunable) param.write(to, param.read(from));

@@ -19,6 +19,11 @@ std::optional<config::ConfigError> load_daemon_config(const std::string& path, D
 // comma-separated; empty when none do. A reload applies tunables only and reports these.
 std::string changed_capacities(const DaemonConfig& a, const DaemonConfig& b);
 
+// What config/raysd.ini holds for a real rig: the built-in defaults (a V4L2 camera) with a real PTU
+// driver (a Modbus dual-axis drive on an RS-485 adapter) in place of the mock, so an installed
+// raysd never drives a simulation by default.
+DaemonConfig rig_template();
+
 // Copies every tunable of `from` into `to`, leaving the capacities of `to` as they are.
 void copy_tunables(const DaemonConfig& from, DaemonConfig& to);
 

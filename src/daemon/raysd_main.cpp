@@ -2,7 +2,7 @@
 //   raysd [--config FILE]          run (default /etc/raysd/raysd.ini)
 //   raysd --check-config FILE      validate the file and exit (0, or 78 with file:line)
 //   raysd --stop-axes [--config F] stop the configured unit's axes and exit (systemd ExecStopPost)
-//   raysd --sample-config          print an INI file documenting every key at its default
+//   raysd --sample-config          print config/raysd.ini's body: every key documented, for a real rig
 #include <sysexits.h>
 
 #include <cstdio>
@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
         } else if (arg == "--stop-axes") {
             stop_only = true;
         } else if (arg == "--sample-config") {
-            std::fputs(rays::config::sample_ini(daemon_params(), DaemonConfig{}).c_str(), stdout);
+            std::fputs(rays::config::sample_ini(daemon_params(), rig_template()).c_str(), stdout);
             return 0;
         } else if (arg == "--version") {
             std::printf("raysd %s\n", RAYS_VERSION);
@@ -88,7 +88,14 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "<3>%s\n", problem->to_string().c_str());
         return EX_CONFIG;
     }
-    if (check_only) {
+    if (check_only) {  // the driver's settings must also work together; nothing is opened
+        rays::SteadyClock clock;
+        std::string error;
+        if (!make_ptu_driver(config, clock, error)) {
+            std::fprintf(stderr, "<3>%s: [%s] does not work for ptu.driver = %s: %s\n", config_path.c_str(),
+                         config.ptu.driver.c_str(), config.ptu.driver.c_str(), error.c_str());
+            return EX_CONFIG;
+        }
         std::printf("%s: ok\n", config_path.c_str());
         return 0;
     }

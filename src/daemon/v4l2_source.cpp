@@ -24,7 +24,7 @@ std::unique_ptr<V4l2Source> V4l2Source::open(const CameraSettings& settings, con
     if (!device) device = std::make_unique<capture::SystemVideoDevice>();
     std::unique_ptr<V4l2Source> source(new V4l2Source(settings, clock, std::move(device)));
     if (source->camera_.open() != capture::OpenResult::Streaming) {
-        error = settings.device + ": " + (source->camera_.error().empty() ? "not present" : source->camera_.error());
+        error = source->camera_.error().empty() ? settings.device + ": not present" : source->camera_.error();
         return nullptr;
     }
     return source;

@@ -27,7 +27,7 @@ TEST_CASE("config/raysd.ini documents every key with unit, range and default, as
     DaemonConfig config;
     REQUIRE_FALSE(load_daemon_config(kConfigDir + "raysd.ini", config));
     std::string text = read(kConfigDir + "raysd.ini");
-    std::string generated = rays::config::sample_ini(daemon_params(), DaemonConfig{});
+    std::string generated = rays::config::sample_ini(daemon_params(), rig_template());
     INFO("regenerate the file's body with: raysd --sample-config");
     CHECK(text.size() > generated.size());
     CHECK(text.compare(text.size() - generated.size(), generated.size(), generated) == 0);
@@ -38,6 +38,7 @@ TEST_CASE("config/raysd.ini documents every key with unit, range and default, as
         CHECK(text.find(line) != std::string::npos);
     }
     CHECK(config.camera.source == "v4l2");  // a real install never falls back to a simulation
+    CHECK(config.ptu.driver == "modbus");
     CHECK(config.socket.path == "/run/raysd/raysd.sock");
 }
 

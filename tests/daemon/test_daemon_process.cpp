@@ -128,6 +128,10 @@ TEST_CASE("config errors name file and line and exit with 78; --check-config val
     DaemonProcess range({raysd_binary().string(), "--check-config", bad.string()}, {}, s.dir / "range.log");
     CHECK(range.wait(5s) == 78);
     CHECK(range.log().find(":2: loop.budget_ms = 0 is out of range") != std::string::npos);
+    std::ofstream(bad) << "[ptu]\ndriver = modbus\n\n[modbus]\npreset = custom\n";  // valid keys, no register map
+    DaemonProcess driver({raysd_binary().string(), "--check-config", bad.string()}, {}, s.dir / "driver.log");
+    CHECK(driver.wait(5s) == 78);
+    CHECK(driver.log().find("[modbus] does not work for ptu.driver = modbus: ") != std::string::npos);
 }
 
 TEST_CASE("raysd tells systemd READY=1 once serving, feeds the watchdog, and stops cleanly on SIGTERM") {

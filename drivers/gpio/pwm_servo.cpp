@@ -1,4 +1,5 @@
 #include "drivers/gpio/pwm_servo.hpp"
+#include "common/angles.hpp"
 
 #include <time.h>
 
@@ -6,14 +7,12 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "drivers/gpio/sysfs_pwm_channel.hpp"
 
 namespace rays::gpio {
 namespace {
 
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 constexpr double kMaxIntegration_s = 0.1;  // a velocity command integrates over at most this much time
 
 TimePoint::duration seconds(double s) {

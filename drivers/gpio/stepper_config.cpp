@@ -1,4 +1,5 @@
 #include "drivers/gpio/stepper_config.hpp"
+#include "common/angles.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +8,6 @@
 namespace rays::gpio {
 namespace {
 
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 struct AxisLines {
     const char* name;

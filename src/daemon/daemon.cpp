@@ -7,10 +7,10 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <numbers>
 #include <future>
 #include <thread>
 
+#include "common/angles.hpp"
 #include "daemon/capture_thread.hpp"
 #include "daemon/command_server.hpp"
 #include "daemon/daemon_params.hpp"
@@ -42,8 +42,7 @@ struct LoopStart {
 };
 
 std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const PtuSettings& ptu) {
-    constexpr double kDegToRad = std::numbers::pi / 180.0;
-    return {{{ptu.pan_inverted, ptu.pan_zero_deg * kDegToRad}, {ptu.tilt_inverted, ptu.tilt_zero_deg * kDegToRad}}};
+    return {{{ptu.pan_inverted, ptu.pan_zero_deg * kRadPerDeg}, {ptu.tilt_inverted, ptu.tilt_zero_deg * kRadPerDeg}}};
 }
 
 // mock.record_path: every command the simulated unit received, for tests and diagnosis.

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <numbers>
 #include <thread>
 
+#include "common/angles.hpp"
 #include "control/pointing.hpp"
 
 namespace rays::daemon {
@@ -14,8 +14,6 @@ namespace {
 using Seconds = std::chrono::duration<double>;
 using Micros = std::chrono::duration<float, std::micro>;
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 // The loop writes to the unit at least this often, frames or not, so the limiter's braking plan holds.
 constexpr Seconds kLongestWait{0.05};
 
@@ -27,15 +25,15 @@ ptu::PtuCommand position_command(double pan_rad, double tilt_rad) {
 }
 
 float velocity_deg_s(const ptu::AxisCommand& axis) {
-    return axis.mode == ptu::CommandMode::Velocity ? static_cast<float>(axis.value * kRadToDeg) : 0.0f;
+    return axis.mode == ptu::CommandMode::Velocity ? static_cast<float>(axis.value * kDegPerRad) : 0.0f;
 }
 
 ptu::PtuLimits limits_of(const PtuMotion& motion) {
     ptu::PtuLimits limits;
-    limits.axes[0] = {motion.pan_min_deg * kDegToRad, motion.pan_max_deg * kDegToRad,
-                      motion.max_velocity_deg_s * kDegToRad, motion.max_accel_deg_s2 * kDegToRad};
-    limits.axes[1] = {motion.tilt_min_deg * kDegToRad, motion.tilt_max_deg * kDegToRad,
-                      motion.max_velocity_deg_s * kDegToRad, motion.max_accel_deg_s2 * kDegToRad};
+    limits.axes[0] = {motion.pan_min_deg * kRadPerDeg, motion.pan_max_deg * kRadPerDeg,
+                      motion.max_velocity_deg_s * kRadPerDeg, motion.max_accel_deg_s2 * kRadPerDeg};
+    limits.axes[1] = {motion.tilt_min_deg * kRadPerDeg, motion.tilt_max_deg * kRadPerDeg,
+                      motion.max_velocity_deg_s * kRadPerDeg, motion.max_accel_deg_s2 * kRadPerDeg};
     limits.command_interval_s = kLongestWait.count();
     return limits;
 }
@@ -104,10 +102,10 @@ void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
     case CommandKind::Home:
         if (ptu::DriverStatus homing = ptu_.home(now); !homing.ok)
             channels_.log.log(Priority::Notice, "ptu home: %s; moving to the home angles", homing.what());
-        manual_ = position_command(tunables_.ptu.home_pan_deg * kDegToRad, tunables_.ptu.home_tilt_deg * kDegToRad);
+        manual_ = position_command(tunables_.ptu.home_pan_deg * kRadPerDeg, tunables_.ptu.home_tilt_deg * kRadPerDeg);
         break;
     case CommandKind::Park:
-        manual_ = position_command(tunables_.ptu.park_pan_deg * kDegToRad, tunables_.ptu.park_tilt_deg * kDegToRad);
+        manual_ = position_command(tunables_.ptu.park_pan_deg * kRadPerDeg, tunables_.ptu.park_tilt_deg * kRadPerDeg);
         break;
     case CommandKind::Stop: manual_ = ptu::PtuCommand::stop(); break;
     }
@@ -161,10 +159,10 @@ ptu::PtuCommand FrameLoop::next_command(TimePoint now) const {
         if (tunables_.control.stop_when_lost) return ptu::PtuCommand::stop();
         return commanded_;
     }
-    control::FieldOfView fov{tunables_.control.horizontal_fov_deg * kDegToRad,
-                             tunables_.control.vertical_fov_deg * kDegToRad};
+    control::FieldOfView fov{tunables_.control.horizontal_fov_deg * kRadPerDeg,
+                             tunables_.control.vertical_fov_deg * kRadPerDeg};
     control::AngularOffset offset = control::pixel_to_angle({telemetry_.ref_x, telemetry_.ref_y}, fov);
-    return control::proportional_command(offset, tunables_.control.gain, tunables_.control.deadband_deg * kDegToRad);
+    return control::proportional_command(offset, tunables_.control.gain, tunables_.control.deadband_deg * kRadPerDeg);
 }
 
 void FrameLoop::drive_unit(TimePoint now) {
@@ -199,8 +197,8 @@ void FrameLoop::record_times(float loop_us) {
 
 void FrameLoop::publish(TimePoint now, TimePoint step_start) {
     telemetry_.mode = mode_;
-    telemetry_.pan_deg = static_cast<float>(unit_.axes[0].position_rad * kRadToDeg);
-    telemetry_.tilt_deg = static_cast<float>(unit_.axes[1].position_rad * kRadToDeg);
+    telemetry_.pan_deg = static_cast<float>(unit_.axes[0].position_rad * kDegPerRad);
+    telemetry_.tilt_deg = static_cast<float>(unit_.axes[1].position_rad * kDegPerRad);
     telemetry_.pan_cmd_deg_s = velocity_deg_s(commanded_.axes[0]);
     telemetry_.tilt_cmd_deg_s = velocity_deg_s(commanded_.axes[1]);
     if (frame_fresh_) {
@@ -235,7 +233,7 @@ void FrameLoop::publish(TimePoint now, TimePoint step_start) {
 void FrameLoop::stop_unit() {
     if (tunables_.ptu.park_on_exit && driver_status_.ok) {
         ptu::PtuCommand park =
-            position_command(tunables_.ptu.park_pan_deg * kDegToRad, tunables_.ptu.park_tilt_deg * kDegToRad);
+            position_command(tunables_.ptu.park_pan_deg * kRadPerDeg, tunables_.ptu.park_tilt_deg * kRadPerDeg);
         TimePoint give_up = clock_.now() + std::chrono::seconds(5);
         for (int tries = 0; tries < 1000 && clock_.now() < give_up; ++tries) {
             TimePoint now = clock_.now();

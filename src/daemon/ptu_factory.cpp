@@ -1,6 +1,6 @@
 #include "daemon/ptu_factory.hpp"
 
-#include <numbers>
+#include "common/angles.hpp"
 
 #include "drivers/can/canopen/canopen_driver.hpp"
 #include "drivers/can/odrive/odrive_driver.hpp"
@@ -13,10 +13,9 @@ namespace rays::daemon {
 namespace {
 
 ptu::MockPtuConfig mock_ptu_config(const MockPtuSettings& mock) {
-    constexpr double kDegToRad = std::numbers::pi / 180.0;
     ptu::MockPtuConfig config;
-    config.max_velocity_rad_s = mock.max_velocity_deg_s * kDegToRad;
-    config.max_accel_rad_s2 = mock.max_accel_deg_s2 * kDegToRad;
+    config.max_velocity_rad_s = mock.max_velocity_deg_s * kRadPerDeg;
+    config.max_accel_rad_s2 = mock.max_accel_deg_s2 * kRadPerDeg;
     config.latency_s = mock.latency_ms / 1000.0;
     config.record_capacity = mock.record_path.empty() ? 16 : 262'144;
     return config;

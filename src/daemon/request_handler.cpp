@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
+#include "common/angles.hpp"
 #include "config/config_engine.hpp"
 #include "daemon/base64.hpp"
 #include "daemon/daemon_params.hpp"
@@ -21,7 +21,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr int kSnapshotZoom = 4;
 // Copying and printing a JSON value recurse once per level: a deeper "id" overflowed the stack.
 constexpr int kMaxRequestDepth = 64;
@@ -135,10 +134,10 @@ json RequestHandler::status() const {
                  {"mode", to_string(s.mode)},
                  {"running", s.running}};
         reply["ptu"] = {{"driver", facts_.driver},
-                        {"pan_deg", s.ptu.axes[0].position_rad / kDegToRad},
-                        {"tilt_deg", s.ptu.axes[1].position_rad / kDegToRad},
-                        {"pan_deg_s", s.ptu.axes[0].velocity_rad_s / kDegToRad},
-                        {"tilt_deg_s", s.ptu.axes[1].velocity_rad_s / kDegToRad},
+                        {"pan_deg", s.ptu.axes[0].position_rad / kRadPerDeg},
+                        {"tilt_deg", s.ptu.axes[1].position_rad / kRadPerDeg},
+                        {"pan_deg_s", s.ptu.axes[0].velocity_rad_s / kRadPerDeg},
+                        {"tilt_deg_s", s.ptu.axes[1].velocity_rad_s / kRadPerDeg},
                         {"enabled", s.ptu.axes[0].enabled && s.ptu.axes[1].enabled},
                         {"fault", s.ptu_fault || s.ptu.axes[0].fault || s.ptu.axes[1].fault},
                         {"message", s.ptu_message.data()}};
@@ -236,14 +235,14 @@ json RequestHandler::ptu(const json& request) {
         std::optional<double> tilt = number_field(request, "tilt_deg_s");
         if (!pan) return missing_number("pan_deg_s", "ptu jog");
         if (!tilt) return missing_number("tilt_deg_s", "ptu jog");
-        return send(make_command(CommandKind::Jog, *pan * kDegToRad, *tilt * kDegToRad), "ptu");
+        return send(make_command(CommandKind::Jog, *pan * kRadPerDeg, *tilt * kRadPerDeg), "ptu");
     }
     if (what == "goto") {
         std::optional<double> pan = number_field(request, "pan_deg");
         std::optional<double> tilt = number_field(request, "tilt_deg");
         if (!pan) return missing_number("pan_deg", "ptu goto");
         if (!tilt) return missing_number("tilt_deg", "ptu goto");
-        return send(make_command(CommandKind::Goto, *pan * kDegToRad, *tilt * kDegToRad), "ptu");
+        return send(make_command(CommandKind::Goto, *pan * kRadPerDeg, *tilt * kRadPerDeg), "ptu");
     }
     if (what == "stop") return send(make_command(CommandKind::Stop), "ptu");
     if (what == "home") return send(make_command(CommandKind::Home), "ptu");

@@ -156,28 +156,6 @@ nlohmann::json LineConnection::request(const nlohmann::json& request) {
     }
 }
 
-CapturedLog::CapturedLog() : path_(fresh_dir("captured-log") / "stderr.txt") {
-    std::fflush(stderr);
-    saved_ = dup(STDERR_FILENO);
-    int fd = open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, STDERR_FILENO);
-    close(fd);
-}
-
-CapturedLog::~CapturedLog() {
-    std::fflush(stderr);
-    dup2(saved_, STDERR_FILENO);
-    close(saved_);
-}
-
-std::string CapturedLog::text() const {
-    std::fflush(stderr);
-    std::ifstream file(path_);
-    std::stringstream content;
-    content << file.rdbuf();
-    return content.str();
-}
-
 std::filesystem::path raysd_binary() { return RAYSD_BINARY; }
 std::filesystem::path raysctl_binary() { return RAYSCTL_BINARY; }
 

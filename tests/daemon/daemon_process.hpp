@@ -53,18 +53,6 @@ private:
     std::string buffer_;
 };
 
-// Sends stderr to a file while alive; text() reads what was written so far.
-class CapturedLog {
-public:
-    CapturedLog();
-    ~CapturedLog();
-    std::string text() const;
-
-private:
-    std::filesystem::path path_;
-    int saved_ = -1;
-};
-
 std::filesystem::path raysd_binary();
 std::filesystem::path raysctl_binary();
 

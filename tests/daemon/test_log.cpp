@@ -2,52 +2,18 @@
 // frame loop's non-blocking queue.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
-#include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <algorithm>
 #include <thread>
 
+#include "captured_log.hpp"
 #include "daemon/log.hpp"
 #include "daemon/loop_log.hpp"
 
-namespace {
-
 using namespace rays::daemon;
-
-// Sends stderr to a file while alive; text() reads what was written.
-class CapturedStderr {
-public:
-    CapturedStderr() : path_("captured-stderr.txt") {
-        std::fflush(stderr);
-        saved_ = dup(STDERR_FILENO);
-        std::FILE* file = std::fopen(path_.c_str(), "w");
-        dup2(fileno(file), STDERR_FILENO);
-        std::fclose(file);
-    }
-    ~CapturedStderr() {
-        std::fflush(stderr);
-        dup2(saved_, STDERR_FILENO);
-        close(saved_);
-    }
-    std::string text() const {
-        std::fflush(stderr);
-        std::ifstream file(path_);
-        std::stringstream content;
-        content << file.rdbuf();
-        return content.str();
-    }
-
-private:
-    std::string path_;
-    int saved_ = -1;
-};
-
-}  // namespace
+using rays::test::CapturedLog;
 
 TEST_CASE("log lines carry the sd-daemon priority prefix and respect the level") {
-    CapturedStderr captured;
+    CapturedLog captured;
     set_log_level(Priority::Info);
     set_log_repeat_interval(std::chrono::seconds(0));
     log(Priority::Err, "disk %s", "gone");
@@ -61,7 +27,7 @@ TEST_CASE("log lines carry the sd-daemon priority prefix and respect the level")
 }
 
 TEST_CASE("a repeated message is written once per interval, then with the count held back") {
-    CapturedStderr captured;
+    CapturedLog captured;
     set_log_level(Priority::Info);
     set_log_repeat_interval(std::chrono::milliseconds(200));
     for (int i = 0; i < 5; ++i) log(Priority::Warning, "camera away (%d)", i);
@@ -74,7 +40,7 @@ TEST_CASE("a repeated message is written once per interval, then with the count 
 }
 
 TEST_CASE("the frame loop's log lines wait in a bounded queue until drained; overflow is counted") {
-    CapturedStderr captured;
+    CapturedLog captured;
     set_log_level(Priority::Info);
     set_log_repeat_interval(std::chrono::seconds(0));
     LoopLog loop_log;

@@ -7,6 +7,7 @@
 #include "daemon/capture_thread.hpp"
 #include "daemon/frame_loop.hpp"
 #include "daemon/replay_source.hpp"
+#include "captured_log.hpp"
 #include "daemon_process.hpp"
 #include "drivers/mock/mock_ptu.hpp"
 

@@ -1,8 +1,8 @@
 #include "drivers/can/canopen/configuration_plan.hpp"
+#include "common/angles.hpp"
 
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 
 #include "drivers/can/canopen/canopen_ids.hpp"
 #include "drivers/can/canopen/cia402.hpp"
@@ -36,7 +36,7 @@ private:
 };
 
 std::uint32_t per_second(double deg_per_s, double counts_per_rad) {
-    return static_cast<std::uint32_t>(std::lround(deg_per_s * std::numbers::pi / 180.0 * counts_per_rad));
+    return static_cast<std::uint32_t>(std::lround(deg_per_s * kRadPerDeg * counts_per_rad));
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 #include "drivers/can/odrive/odrive_axis.hpp"
+#include "common/angles.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
-#include <numbers>
 
 #include "drivers/can/odrive/odrive_protocol.hpp"
 
@@ -14,7 +14,7 @@ namespace {
 constexpr auto kArmTimeout = std::chrono::milliseconds(500);
 
 float turns(double deg, double turns_per_rad) {
-    return static_cast<float>(deg * std::numbers::pi / 180.0 * turns_per_rad);
+    return static_cast<float>(deg * kRadPerDeg * turns_per_rad);
 }
 
 }  // namespace

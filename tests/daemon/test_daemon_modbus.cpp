@@ -24,7 +24,7 @@ void track_and_move(const std::string& transport) {
     const int port = free_tcp_port();
     const std::string link = (dir / "unit.pty").string();
     const std::string modbus = "[modbus]\ntransport = " + transport + "\nport = " + std::to_string(port) +
-                               "\ndevice = " + link + "\ntimeout_ms = 40\nretries = 1\n" + custom_map_ini(300);
+                               "\ndevice = " + link + "\ntimeout_ms = 200\nretries = 2\n" + custom_map_ini(1000);
     std::ofstream(dir / "sim.ini") << modbus;
     std::ofstream(dir / "raysd.ini") << "[camera]\nsource = replay\nreplay_path = " << (dir / "seq.y4m").string()
                                      << "\nreplay_loop = true\n\n[socket]\npath = " << (dir / "raysd.sock").string()
@@ -48,8 +48,14 @@ void track_and_move(const std::string& transport) {
     CHECK(status["ptu"]["driver"] == "modbus");
     CHECK(status["ptu"]["fault"] == false);
     CHECK(c.request({{"cmd", "ptu"}, {"action", "goto"}, {"pan_deg", 10}, {"tilt_deg", -5}})["class"] == "ok");
-    std::this_thread::sleep_for(2s);
-    status = c.request({{"cmd", "status"}});
+    for (int i = 0; i < 80; ++i) {  // the unit moves there (at most 8 s, a loaded machine's serial link)
+        status = c.request({{"cmd", "status"}});
+        if (std::abs(status["ptu"]["pan_deg"].get<double>() - 10) < 0.2 &&
+            std::abs(status["ptu"]["tilt_deg"].get<double>() + 5) < 0.2)
+            break;
+        std::this_thread::sleep_for(100ms);
+    }
+    INFO(status.dump());
     CHECK(status["ptu"]["pan_deg"].get<double>() == Approx(10).margin(0.2));
     CHECK(status["ptu"]["tilt_deg"].get<double>() == Approx(-5).margin(0.2));
     daemon.signal(SIGTERM);

@@ -1,4 +1,5 @@
-// ptu-sim: a simulated pan/tilt unit on Modbus for tests, benches and trying raysd without hardware.
+// ptu-sim: a simulated pan/tilt unit on Modbus (or CANopen, --can) for tests, benches and trying raysd
+// without hardware.
 //
 //   ptu-sim (--tcp PORT | --rtu-pty LINK) [--preset NAME | --config FILE] [--record FILE.csv]
 //           [--drop] [--slow-ms N] [--exception CODE] [--fault pan|tilt] [--disconnect]
@@ -27,6 +28,7 @@
 #include "config/config_engine.hpp"
 #include "drivers/modbus/presets.hpp"
 #include "drivers/modbus/register_map.hpp"
+#include "can_sim.hpp"
 #include "sim_server.hpp"
 #include "sim_unit.hpp"
 
@@ -42,7 +44,8 @@ double seconds(TimePoint t) { return std::chrono::duration<double>(t.time_since_
 int usage() {
     std::fprintf(stderr,
                  "usage: ptu-sim (--tcp PORT | --rtu-pty LINK) [--preset NAME | --config FILE] [--record FILE]\n"
-                 "               [--drop] [--slow-ms N] [--exception CODE] [--fault pan|tilt] [--disconnect]\n");
+                 "               [--drop] [--slow-ms N] [--exception CODE] [--fault pan|tilt] [--disconnect]\n"
+                 "       ptu-sim --can IFACE [--can-nodes PAN,TILT]   (CiA 402 drives, default nodes 1,2)\n");
     return 2;
 }
 
@@ -86,7 +89,8 @@ int main(int argc, char** argv) {
     ServerOptions options;
     std::string preset = "custom", config_path, record_path, rtu_link;
     Faults faults;
-    std::string fault_axis;
+    std::string fault_axis, can_interface;
+    int can_nodes[2] = {1, 2};
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         const bool has_value = i + 1 < argc;
@@ -100,7 +104,22 @@ int main(int argc, char** argv) {
         else if (arg == "--exception" && has_value) faults.exception = std::atoi(argv[++i]);
         else if (arg == "--fault" && has_value) fault_axis = argv[++i];
         else if (arg == "--disconnect") faults.disconnect = true;
-        else return usage();
+        else if (arg == "--can" && has_value) can_interface = argv[++i];
+        else if (arg == "--can-nodes" && has_value && std::sscanf(argv[++i], "%d,%d", &can_nodes[0], &can_nodes[1]) == 2) {
+        } else return usage();
+    }
+    if (!can_interface.empty()) {  // until stdin closes or says quit
+        std::atomic<bool> stop_can{false};
+        std::thread stdin_watch([&] {
+            std::string line;
+            while (std::getline(std::cin, line) && line != "quit") {
+            }
+            stop_can = true;
+        });
+        int status = run_can_sim(can_interface, can_nodes[0], can_nodes[1], stop_can);
+        if (status != 0) std::_Exit(status);  // stdin_watch may still be blocked in getline
+        stdin_watch.join();
+        return 0;
     }
     if ((options.tcp_port > 0) == !rtu_link.empty()) return usage();
 

@@ -178,4 +178,13 @@ void write_test_sequence(const std::filesystem::path& path, int frames) {
     writer.close();
 }
 
+std::filesystem::path write_replay_config(const std::filesystem::path& dir, const std::string& sections) {
+    write_test_sequence(dir / "seq.y4m", 100);
+    std::filesystem::path ini = dir / "raysd.ini";
+    std::ofstream(ini) << "[camera]\nsource = replay\nreplay_path = " << (dir / "seq.y4m").string()
+                       << "\nreplay_loop = true\n\n[socket]\npath = " << (dir / "raysd.sock").string() << "\n\n"
+                       << sections;
+    return ini;
+}
+
 }  // namespace rays::test

@@ -62,4 +62,8 @@ std::filesystem::path fresh_dir(const std::string& name);
 // Writes a short generated sequence (a disc moving across clutter) as YUV4MPEG2.
 void write_test_sequence(const std::filesystem::path& path, int frames);
 
+// Writes dir/seq.y4m (100 frames) and dir/raysd.ini replaying it in a loop at its rate, with the
+// socket dir/raysd.sock, followed by `sections`; returns the INI file's path.
+std::filesystem::path write_replay_config(const std::filesystem::path& dir, const std::string& sections);
+
 }  // namespace rays::test

@@ -10,7 +10,6 @@
 
 #include <linux/can.h>
 
-#include <fstream>
 #include <thread>
 
 #include "daemon_process.hpp"
@@ -28,13 +27,10 @@ TEST_CASE("raysd with driver = canopen moves ptu-sim's CiA 402 drives on vcan0")
     if (if_nametoindex("vcan0") == 0) skip("no vcan0 interface (ip link add dev vcan0 type vcan; ip link set up vcan0)");
 
     std::filesystem::path dir = fresh_dir("can");
-    write_test_sequence(dir / "seq.y4m", 100);
-    std::ofstream(dir / "raysd.ini") << "[camera]\nsource = replay\nreplay_path = " << (dir / "seq.y4m").string()
-                                     << "\nreplay_loop = true\n\n[socket]\npath = " << (dir / "raysd.sock").string()
-                                     << "\n\n[ptu]\ndriver = canopen\n\n[canopen]\ninterface = vcan0\n";
+    std::filesystem::path ini = write_replay_config(dir, "[ptu]\ndriver = canopen\n\n[canopen]\ninterface = vcan0\n");
     SimProcess sim({RAYS_PTU_SIM, "--can", "vcan0", "--can-nodes", "1,2"});
     REQUIRE(sim.ready());
-    DaemonProcess daemon({raysd_binary().string(), "--config", (dir / "raysd.ini").string()}, {}, dir / "raysd.log");
+    DaemonProcess daemon({raysd_binary().string(), "--config", ini.string()}, {}, dir / "raysd.log");
     INFO(daemon.log());
     REQUIRE(wait_for_socket(dir / "raysd.sock", 10s));
     LineConnection c(dir / "raysd.sock");

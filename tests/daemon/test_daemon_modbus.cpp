@@ -20,16 +20,12 @@ using namespace std::chrono_literals;
 
 void track_and_move(const std::string& transport) {
     std::filesystem::path dir = fresh_dir("modbus-" + transport);
-    write_test_sequence(dir / "seq.y4m", 100);
     const int port = free_tcp_port();
     const std::string link = (dir / "unit.pty").string();
     const std::string modbus = "[modbus]\ntransport = " + transport + "\nport = " + std::to_string(port) +
                                "\ndevice = " + link + "\ntimeout_ms = 200\nretries = 2\n" + custom_map_ini(1000);
     std::ofstream(dir / "sim.ini") << modbus;
-    std::ofstream(dir / "raysd.ini") << "[camera]\nsource = replay\nreplay_path = " << (dir / "seq.y4m").string()
-                                     << "\nreplay_loop = true\n\n[socket]\npath = " << (dir / "raysd.sock").string()
-                                     << "\n\n[ptu]\ndriver = modbus\n\n"
-                                     << modbus;
+    std::filesystem::path ini = write_replay_config(dir, "[ptu]\ndriver = modbus\n\n" + modbus);
     std::vector<std::string> sim_args{RAYS_PTU_SIM, "--config", (dir / "sim.ini").string(), "--record",
                                       (dir / "received.csv").string()};
     if (transport == "tcp") sim_args.insert(sim_args.end(), {"--tcp", std::to_string(port)});
@@ -37,7 +33,7 @@ void track_and_move(const std::string& transport) {
     SimProcess sim(sim_args);
     REQUIRE(sim.ready());
 
-    DaemonProcess daemon({raysd_binary().string(), "--config", (dir / "raysd.ini").string()}, {}, dir / "raysd.log");
+    DaemonProcess daemon({raysd_binary().string(), "--config", ini.string()}, {}, dir / "raysd.log");
     INFO(daemon.log());
     REQUIRE(wait_for_socket(dir / "raysd.sock", 10s));
     LineConnection c(dir / "raysd.sock");

@@ -5,7 +5,6 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <thread>
 
 #include "daemon/daemon.hpp"
@@ -29,12 +28,7 @@ using namespace std::chrono_literals;
 
 // raysd.ini for a driver: a generated sequence replayed at its rate, and `sections`.
 DaemonConfig load_config(const std::string& name, const std::string& sections) {
-    std::filesystem::path dir = test::fresh_dir("driver-" + name);
-    test::write_test_sequence(dir / "seq.y4m", 100);
-    std::filesystem::path ini = dir / "raysd.ini";
-    std::ofstream(ini) << "[camera]\nsource = replay\nreplay_path = " << (dir / "seq.y4m").string()
-                       << "\nreplay_loop = true\n\n[socket]\npath = " << (dir / "raysd.sock").string() << "\n\n"
-                       << sections;
+    std::filesystem::path ini = test::write_replay_config(test::fresh_dir("driver-" + name), sections);
     DaemonConfig config;
     auto error = load_daemon_config(ini.string(), config);
     INFO((error ? error->to_string() : ""));

@@ -9,19 +9,10 @@ namespace {
 
 constexpr double kStartRadiusPx = 10.0;  // least first guess of the contour size at a new target
 constexpr int kStartCandidates = 6;     // start points tried round a detected region's centre
-constexpr double kVelocityRate = 0.7;
-constexpr double kRetryMinSpeedPx = 1.0; // slower targets are not worth a second prediction   // weight of the newest centroid step in the velocity
+constexpr double kVelocityRate = 0.7;     // weight of the newest centroid step in the velocity
+constexpr double kRetryMinSpeedPx = 1.0;  // slower targets are not worth a second prediction
 
 }  // namespace
-
-const char* to_string(TrackState s) {
-    switch (s) {
-        case TrackState::Detecting: return "detecting";
-        case TrackState::Tracking: return "tracking";
-        case TrackState::Lost: return "lost";
-    }
-    return "?";
-}
 
 Tracker::Tracker(const TrackerConfig& config, const Clock& clock)
     : clock_(clock),
@@ -46,6 +37,8 @@ bool Tracker::set_tunables(const TrackerTunables& tunables) {
 }
 
 void Tracker::start_at(Point m) { start_point_ = m; }
+
+void Tracker::allow_detection(bool allowed) { detection_allowed_ = allowed; }
 
 void Tracker::release() {
     result_.state = TrackState::Detecting;
@@ -104,9 +97,16 @@ void Tracker::track(TimePoint deadline) {
     const Point last = contour_.centroid;
     const Point v = tunables_.predict ? velocity_ : Point{};
     // Constant velocity first; when that contour fails the attention check (the target turned or
-    // stopped), the target held still, then reversed — a turn must not cost the track.
-    const Point steps[] = {v, {0.0, 0.0}, {-v.x, -v.y}};
-    const int tries = tunables_.predict && std::hypot(v.x, v.y) >= kRetryMinSpeedPx ? 3 : 1;
+    // stopped), the target held still, then reversed — a turn must not cost the track. An outside
+    // prediction (predict_next) goes first, with the image's own constant velocity as the fallback.
+    Point steps[] = {v, {0.0, 0.0}, {-v.x, -v.y}};
+    int tries = tunables_.predict && std::hypot(v.x, v.y) >= kRetryMinSpeedPx ? 3 : 1;
+    if (external_prediction_) {
+        steps[2] = steps[0];
+        steps[0] = {external_prediction_->x - last.x, external_prediction_->y - last.y};
+        steps[1] = {0.0, 0.0};
+        tries = 3;
+    }
     Point applied{};
     const char* reason = nullptr;
     for (int k = 0; k < tries; ++k) {
@@ -151,7 +151,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
         if (start_point_) {
             found = begin_track(*start_point_, kStartRadiusPx, false, deadline);
             start_point_.reset();
-        } else if (has_previous_) {
+        } else if (has_previous_ && detection_allowed_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;
             if (d.found) found = begin_track(d.centre, d.radius_px, true, deadline);
@@ -160,6 +160,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
         result_.has_contour = found;
         result_.predicted = contour_.centroid;
     }
+    external_prediction_.reset();
     previous_ = frame;
     has_previous_ = true;
     return result_;

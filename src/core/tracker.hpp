@@ -8,43 +8,35 @@
 #include "core/active_rays.hpp"
 #include "core/attention.hpp"
 #include "core/clock.hpp"
+#include "core/contour_tracker.hpp"
 #include "core/gaussian_smoother.hpp"
 #include "core/motion_detector.hpp"
 
 namespace rays {
 
-enum class TrackState { Detecting, Tracking, Lost };
-const char* to_string(TrackState s);
-
-struct FrameResult {
-    long frame = -1;
-    TrackState state = TrackState::Detecting;
-    bool has_contour = false;      // true while tracking
-    Point predicted;               // where m was expected this frame
-    Detection detection;           // the motion detector's output, on frames it ran
-    const char* lost_reason = nullptr;
-};
-
-class Tracker {
+class Tracker final : public ContourTracker {
 public:
     // Sizes every buffer from config.capacity; nothing is allocated after this.
     Tracker(const TrackerConfig& config, const Clock& clock);
 
     // Applies new tunables within the capacities without allocating; false (nothing changed) if invalid.
-    bool set_tunables(const TrackerTunables& tunables);
+    const char* method() const override { return "rays"; }
+    bool set_tunables(const TrackerTunables& tunables) override;
     const TrackerTunables& tunables() const { return tunables_; }
     const TrackerCapacity& capacity() const { return capacity_; }
 
-    void start_at(Point m);  // a start point from the user replaces detection on the next frame
-    void release();          // drop the target and detect again
-    void reinit();           // release and restart the detector's threshold adaptation
+    void start_at(Point m) override;
+    void release() override;
+    void reinit() override;
+    void predict_next(Point m) override { external_prediction_ = m; }
+    void allow_detection(bool allowed) override;
 
     // Processes one frame; refinement stops before `deadline`. No allocation, no exceptions.
-    const FrameResult& process(const GreyImage& frame, TimePoint deadline);
+    const FrameResult& process(const GreyImage& frame, TimePoint deadline) override;
 
     TrackState state() const { return result_.state; }
-    const FrameResult& result() const { return result_; }
-    const Contour& contour() const { return contour_; }
+    const FrameResult& result() const override { return result_; }
+    const Contour& contour() const override { return contour_; }
     const ActiveRays& rays() const { return rays_; }
 
 private:
@@ -71,6 +63,8 @@ private:
     int last_count_ = 0;
     Point velocity_;
     std::optional<Point> start_point_;
+    std::optional<Point> external_prediction_;  // from predict_next(), for the next frame only
+    bool detection_allowed_ = true;
     int lost_frames_ = 0;
     FrameResult result_;
 };

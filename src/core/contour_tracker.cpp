@@ -1,0 +1,14 @@
+#include "core/contour_tracker.hpp"
+
+namespace rays {
+
+const char* to_string(TrackState s) {
+    switch (s) {
+        case TrackState::Detecting: return "detecting";
+        case TrackState::Tracking: return "tracking";
+        case TrackState::Lost: return "lost";
+    }
+    return "?";
+}
+
+}  // namespace rays

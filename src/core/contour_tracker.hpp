@@ -1,0 +1,55 @@
+// What the frame loop and rays-soak need of a contour tracker, so that active rays (Tracker) and the
+// greedy-snake baseline (snake/greedy_snake_tracker.hpp) run in the same closed loop.
+// Implementations size every buffer in their constructor and never allocate, block or throw in
+// process().
+#pragma once
+#include "core/clock.hpp"
+#include "core/contour.hpp"
+#include "core/image.hpp"
+#include "core/motion_detector.hpp"
+#include "core/tracker_config.hpp"
+
+namespace rays {
+
+enum class TrackState { Detecting, Tracking, Lost };
+const char* to_string(TrackState s);
+
+struct FrameResult {
+    long frame = -1;
+    TrackState state = TrackState::Detecting;
+    bool has_contour = false;      // true while tracking
+    Point predicted;               // where m was expected this frame
+    Detection detection;           // the motion detector's output, on frames it ran
+    const char* lost_reason = nullptr;
+};
+
+class ContourTracker {
+public:
+    virtual ~ContourTracker() = default;
+
+    virtual const char* method() const = 0;  // "rays" | "snake"
+
+    // New tunables within the capacities, without allocating; false (nothing changed) if invalid.
+    virtual bool set_tunables(const TrackerTunables& tunables) = 0;
+
+    virtual void start_at(Point m) = 0;  // a start point from the user replaces detection on the next frame
+    virtual void release() = 0;          // drop the target and detect again
+    virtual void reinit() = 0;           // release and restart the detector's threshold adaptation
+
+    // Where the target's reference point will be in the next frame, from a predictor that knows more
+    // than the image (the camera's own motion, a Kalman filter on the target): used once, by the next
+    // process(), instead of the tracker's own constant-velocity guess.
+    virtual void predict_next(Point m) = 0;
+    // Frame differencing only makes sense while the camera holds still: while false, a detecting
+    // tracker does not run the motion detector. The caller allows it only when the camera stood
+    // still from the previous frame's capture to this one's.
+    virtual void allow_detection(bool allowed) = 0;
+
+    // Processes one frame; refinement stops before `deadline`.
+    virtual const FrameResult& process(const GreyImage& frame, TimePoint deadline) = 0;
+
+    virtual const FrameResult& result() const = 0;
+    virtual const Contour& contour() const = 0;  // valid while result().has_contour
+};
+
+}  // namespace rays

@@ -1,0 +1,56 @@
+// A Kalman filter on the target's direction in world angles: per axis (azimuth, elevation) the state
+// is angle and angular rate under a constant-velocity model with white-noise acceleration; each
+// sighting measures the angles (the contour's centre through the camera model at the unit's pose
+// at capture time), so the rig's own motion is already removed. Azimuth innovations are wrapped.
+// Fixed-size Eigen matrices: no allocation.
+#pragma once
+#include <Eigen/Core>
+
+#include "control/camera_model.hpp"
+
+namespace rays::control {
+
+struct TargetFilterSettings {
+    double accel_rad_s2 = 1.0;          // how hard targets accelerate (process noise, 1 σ)
+    double measurement_rad = 0.004;     // 1 σ of a sighting's angles
+    double gate_sigma = 6.0;            // a sighting further than this from the prediction restarts the filter
+};
+
+struct TargetEstimate {
+    WorldAngles angles;        // at the requested time
+    double azimuth_rate = 0;   // rad/s
+    double elevation_rate = 0;
+};
+
+class TargetFilter {
+public:
+    explicit TargetFilter(const TargetFilterSettings& settings = {}) : settings_(settings) {}
+    void set_settings(const TargetFilterSettings& settings) { settings_ = settings; }
+
+    // Folds in a sighting made at t_s (seconds on the loop's clock). The first sighting after reset()
+    // (or one outside the gate) starts the filter there, at rest with a wide rate uncertainty.
+    // Returns false when the sighting restarted the filter.
+    bool update(WorldAngles measured, double t_s);
+    void reset() { started_ = false; }
+
+    bool started() const { return started_; }
+    double last_update_s() const { return time_s_; }
+    // The state extrapolated to t_s (no update): constant velocity from the last sighting.
+    TargetEstimate at(double t_s) const;
+    // 1 σ of the angle estimate per axis, as the filter sees it now.
+    double angle_sigma(int axis) const;
+
+private:
+    using Vector4 = Eigen::Matrix<double, 4, 1>;  // azimuth, elevation, their rates
+    using Matrix4 = Eigen::Matrix<double, 4, 4>;
+
+    void start(WorldAngles measured, double t_s);
+
+    TargetFilterSettings settings_;
+    bool started_ = false;
+    double time_s_ = 0;
+    Vector4 x_ = Vector4::Zero();
+    Matrix4 p_ = Matrix4::Identity();
+};
+
+}  // namespace rays::control

@@ -1,6 +1,7 @@
 // Every key of the tracking core's configuration: section [rays] holds the capacities and the
 // Active Rays settings, then [detect] (motion detection), [attention] (plausibility checks that
-// declare the target lost) and [track]. Defaults are the member initialisers in
+// declare the target lost), [track] (which tracker, and prediction) and [snake] (the greedy-snake
+// baseline of Williams & Shah, 1992). Defaults are the member initialisers in
 // src/core/tracker_config.hpp; equation numbers refer to Denzler & Niemann, Active Rays.
 #include "config/config_table.hpp"
 
@@ -76,8 +77,50 @@ void add_attention(ParamTable<TrackerConfig>& table) {
 }
 
 void add_track(ParamTable<TrackerConfig>& table) {
+    table.section("track", ParamKind::Capacity, [](TrackerConfig& config) -> auto& { return config; })
+        .add_choice("method", &TrackerConfig::method, "rays|snake",
+                    "the contour tracker: active rays, or the greedy snake of Williams & Shah (the baseline)");
     table.section("track", ParamKind::Tunable, &TrackerConfig::tunables)
         .add("predict", &TrackerTunables::predict, "predict the centre m into the next frame at constant velocity");
+}
+
+void add_snake(ParamTable<TrackerConfig>& table) {
+    table.section("snake", ParamKind::Capacity, &TrackerConfig::capacity)
+        .add("max_points", &TrackerCapacity::max_snake_points, "points", 8, 1024,
+             "most points of the greedy snake; sizes its buffers");
+    table.section("snake", ParamKind::Tunable, [](TrackerConfig& config) -> auto& { return config.tunables.snake; })
+        .add("points", &SnakeTunables::points, "points", 8, 1024, "points on the snake")
+        .add("alpha", &SnakeTunables::alpha, "", 0, 10, "weight of the continuity term (even spacing of the points)")
+        .add("beta", &SnakeTunables::beta, "", 0, 10, "weight of the curvature term (dropped at corners)")
+        .add("gamma", &SnakeTunables::gamma, "", 0, 10, "weight of the image term (-|grad I|)")
+        .add("neighbourhood", &SnakeTunables::neighbourhood, "px", 3, 15,
+             "odd side of the square window a point moves within per pass; larger follows faster motion at "
+             "more cost (Williams & Shah: 3)")
+        .add("max_iterations", &SnakeTunables::max_iterations, "", 1, 1000, "most greedy passes per frame")
+        .add("moved_fraction", &SnakeTunables::moved_fraction, "", 0, 1,
+             "the snake has converged when fewer than this fraction of its points moved in a pass")
+        .add("corner_curvature", &SnakeTunables::corner_curvature, "", 0, 4,
+             "a point is a corner (no curvature term) where the curvature peaks above this...")
+        .add("corner_edge", &SnakeTunables::corner_edge, "grey/px", 0, 1000, "...on an edge at least this strong")
+        .add("image_floor", &SnakeTunables::image_floor, "grey/px", 0.01, 1000,
+             "least spread (max - min) of |grad I| in a window when normalising the image term")
+        .add("edge_floor", &SnakeTunables::edge_floor, "grey/px", 0, 1000,
+             "a point on a weaker |grad I| has no edge (see attention.max_none_fraction)")
+        .add("initial_radius_factor", &SnakeTunables::initial_radius_factor, "", 0.5, 4,
+             "radius of the start circle, relative to the detected target's radius")
+        .add("sigma_px", &SnakeTunables::sigma_px, "px", 0, 2.5,
+             "sigma of the Gaussian pre-smoothing (0: none; the smoother reaches 8/3 px at most)");
+}
+
+CrossRule neighbourhood_is_odd() {
+    CrossRule rule;
+    rule.keys = {"snake.neighbourhood"};
+    rule.check = [](const ParamLookup& value) -> std::optional<std::string> {
+        const double side = value("snake.neighbourhood");
+        if (std::fmod(side, 2.0) == 1.0) return std::nullopt;
+        return "snake.neighbourhood = " + format_number(side) + " must be odd (a window centred on the point)";
+    };
+    return rule;
 }
 
 CrossRule samples_fit_capacity() {
@@ -100,6 +143,7 @@ ParamTable<TrackerConfig> build_tracker_params() {
     add_detect(table);
     add_attention(table);
     add_track(table);
+    add_snake(table);
     table.add_rule(at_most("rays.count", "rays.max_rays"));
     table.add_rule(at_most("rays.hypotheses", "rays.max_hypotheses"));
     table.add_rule(less_than("rays.lambda_min_px", "rays.lambda_max_px"));
@@ -107,6 +151,8 @@ ParamTable<TrackerConfig> build_tracker_params() {
     table.add_rule(at_most("rays.centroid_rays", "rays.count"));
     table.add_rule(at_most("detect.threshold_min", "detect.threshold"));
     table.add_rule(at_most("detect.threshold", "detect.threshold_max"));
+    table.add_rule(at_most("snake.points", "snake.max_points"));
+    table.add_rule(neighbourhood_is_odd());
     return table;
 }
 

@@ -6,6 +6,7 @@
 //     table.section("rays", ParamKind::Tunable, [](TrackerConfig& c) -> auto& { return c.tunables.rays; })
 //         .add("alpha", &RaysTunables::alpha, "", 0, 10, "first-order smoothness");
 // and tables of separate structs combine with include() into the table of a struct holding both.
+// A choice key binds to a std::string field, or to an enum field whose enumerators follow its words.
 #pragma once
 #include <cassert>
 #include <functional>
@@ -26,26 +27,58 @@ namespace rays::config {
 template <class Root, class T>
 using FieldAccess = std::function<T&(Root&)>;
 
+// An enum field offered as a choice: its enumerator k is the k-th word of ParamInfo::choices.
+template <class Root>
+struct ChoiceAccess {
+    std::function<int(const Root&)> get;
+    std::function<void(Root&, int)> set;
+};
+
+// The k-th word of choices "a|b|c" (empty past the last), and the index of `word` (-1 if absent).
+inline std::string_view choice_word(std::string_view choices, int k) {
+    for (; k > 0 && choices.find('|') != std::string_view::npos; --k) choices.remove_prefix(choices.find('|') + 1);
+    return k == 0 ? choices.substr(0, choices.find('|')) : std::string_view{};
+}
+
+inline int choice_index(std::string_view choices, std::string_view word) {
+    for (int k = 0;; ++k) {
+        if (choices.substr(0, choices.find('|')) == word) return k;
+        if (choices.find('|') == std::string_view::npos) return -1;
+        choices.remove_prefix(choices.find('|') + 1);
+    }
+}
+
 template <class Root>
 struct Param {
     ParamInfo info;
-    // Alternatives in the order of ParamType and ParamValue.
+    // Alternatives in the order of ParamType and ParamValue; an enum choice last.
     std::variant<FieldAccess<Root, int>, FieldAccess<Root, double>, FieldAccess<Root, bool>,
-                 FieldAccess<Root, std::string>>
+                 FieldAccess<Root, std::string>, ChoiceAccess<Root>>
         field;
 
     ParamValue read(const Root& root) const {
         // The accessor hands out a reference; reading through it leaves `root` unchanged.
         Root& fields = const_cast<Root&>(root);
-        return std::visit([&](const auto& access) { return ParamValue{access(fields)}; }, field);
+        return std::visit(
+            [&](const auto& access) -> ParamValue {
+                if constexpr (std::is_same_v<std::decay_t<decltype(access)>, ChoiceAccess<Root>>)
+                    return std::string(choice_word(info.choices, access.get(root)));
+                else
+                    return access(fields);
+            },
+            field);
     }
 
     // `value` holds the parameter's own type (as parse_value makes it).
     void write(Root& root, const ParamValue& value) const {
         std::visit(
             [&](const auto& access) {
-                using T = std::remove_reference_t<decltype(access(root))>;
-                access(root) = std::get<T>(value);
+                if constexpr (std::is_same_v<std::decay_t<decltype(access)>, ChoiceAccess<Root>>) {
+                    access.set(root, choice_index(info.choices, std::get<std::string>(value)));
+                } else {
+                    using T = std::remove_reference_t<decltype(access(root))>;
+                    access(root) = std::get<T>(value);
+                }
             },
             field);
     }
@@ -94,6 +127,22 @@ public:
             return *this;
         }
 
+        // One word of `choices` for an enum field: its enumerator k is the k-th word ("rays|snake").
+        template <class E>
+            requires std::is_enum_v<E>
+        Section& add_choice(std::string_view key, E Part::*member, std::string_view choices, std::string_view doc) {
+            ParamInfo info{name_ + "." + std::string(key), ParamType::Choice, kind_, "", 0.0, 0.0, {}, std::string(doc),
+                           choices};
+            table_.add(std::move(info),
+                       ChoiceAccess<Root>{[part = part_, member](const Root& root) {
+                                              return static_cast<int>(part(const_cast<Root&>(root)).*member);
+                                          },
+                                          [part = part_, member](Root& root, int k) {
+                                              part(root).*member = static_cast<E>(k);
+                                          }});
+            return *this;
+        }
+
     private:
         ParamTable& table_;
         std::string name_;
@@ -120,10 +169,19 @@ public:
         for (const Param<Inner>& param : inner.params()) {
             std::visit(
                 [&](const auto& access) {
-                    using T = std::remove_reference_t<decltype(access(std::declval<Inner&>()))>;
-                    add(param.info, FieldAccess<Root, T>([access, to_inner](Root& root) -> T& {
-                            return access(to_inner(root));
-                        }));
+                    if constexpr (std::is_same_v<std::decay_t<decltype(access)>, ChoiceAccess<Inner>>) {
+                        add(param.info, ChoiceAccess<Root>{[get = access.get, to_inner](const Root& root) {
+                                                               return get(to_inner(const_cast<Root&>(root)));
+                                                           },
+                                                           [set = access.set, to_inner](Root& root, int k) {
+                                                               set(to_inner(root), k);
+                                                           }});
+                    } else {
+                        using T = std::remove_reference_t<decltype(access(std::declval<Inner&>()))>;
+                        add(param.info, FieldAccess<Root, T>([access, to_inner](Root& root) -> T& {
+                                return access(to_inner(root));
+                            }));
+                    }
                 },
                 param.field);
         }
@@ -171,6 +229,13 @@ private:
         info.default_value = access(defaults);
         params_.push_back(Param<Root>{std::move(info), {}});
         params_.back().field.template emplace<FieldAccess<Root, T>>(std::move(access));
+    }
+
+    void add(ParamInfo info, ChoiceAccess<Root> access) {
+        assert(find(info.name) == nullptr);
+        info.default_value = std::string(choice_word(info.choices, access.get(Root{})));
+        params_.push_back(Param<Root>{std::move(info), {}});
+        params_.back().field.template emplace<ChoiceAccess<Root>>(std::move(access));
     }
 
     static bool contains(const std::vector<std::string_view>& names, std::string_view name) {

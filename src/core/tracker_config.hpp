@@ -9,6 +9,7 @@ struct TrackerCapacity {
     int max_rays = 720;        // rays.max_rays: most rays per contour
     int max_hypotheses = 6;    // rays.max_hypotheses: most edge hypotheses per ray (the "no edge" state is extra)
     int max_samples = 160;     // rays.max_samples: most samples along one ray
+    int max_snake_points = 128;  // snake.max_points: most points of the greedy snake
 };
 
 struct RaysTunables {
@@ -49,16 +50,41 @@ struct AttentionTunables {
     int lost_frames = 1;              // attention.lost_frames: frames spent in "lost" before detecting again
 };
 
+// The greedy active contour of Williams & Shah (1992), the baseline the product compares active rays
+// with. Each pass moves every point to the best position in a neighbourhood × neighbourhood window
+// round it, so one pass follows motion of at most neighbourhood / 2 px: a larger window follows
+// faster targets at (neighbourhood)² evaluations per point and pass (W&S use 3 × 3).
+struct SnakeTunables {
+    int points = 40;                     // snake.points: points on the contour
+    double alpha = 1.0;                  // snake.alpha: weight of the continuity term (even spacing)
+    double beta = 1.0;                   // snake.beta: weight of the curvature term (0 at corners)
+    double gamma = 1.2;                  // snake.gamma: weight of the image term (-|grad I|)
+    int neighbourhood = 5;               // snake.neighbourhood: odd side of the search window, px
+    int max_iterations = 40;             // snake.max_iterations: most greedy passes per frame
+    double moved_fraction = 0.05;        // snake.moved_fraction: converged when fewer points moved in a pass
+    double corner_curvature = 0.25;      // snake.corner_curvature: W&S corner rule, curvature above this...
+    double corner_edge = 20.0;           // snake.corner_edge: ...on an edge stronger than this (grey/px)
+    double image_floor = 5.0;            // snake.image_floor: least max - min of |grad I| when normalising (grey/px)
+    double edge_floor = 4.0;             // snake.edge_floor: a point on a weaker |grad I| has no edge (grey/px)
+    double initial_radius_factor = 1.3;  // snake.initial_radius_factor: start circle / detected radius
+    double sigma_px = 1.0;               // snake.sigma_px: Gaussian pre-smoothing
+};
+
 struct TrackerTunables {
     RaysTunables rays;
     DetectTunables detect;
     AttentionTunables attention;
+    SnakeTunables snake;
     bool predict = true;  // track.predict: constant-velocity prediction of m into the next frame
 };
+
+// Which contour tracker runs: active rays or the greedy-snake baseline (track.method).
+enum class TrackerMethod { Rays, Snake };
 
 struct TrackerConfig {
     TrackerCapacity capacity;
     TrackerTunables tunables;
+    TrackerMethod method = TrackerMethod::Rays;  // track.method: fixed at start
 };
 
 }  // namespace rays

@@ -1,0 +1,113 @@
+// The named scenarios' scripts: bounds, speeds, pauses and exposure, as their descriptions promise.
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/angles.hpp"
+#include "sim/scenario.hpp"
+
+using namespace rays;
+using namespace rays::sim;
+
+namespace {
+
+Scenario named(std::string_view name) {
+    std::optional<Scenario> s = make_scenario(name, 11);
+    REQUIRE(s);
+    return std::move(*s);
+}
+
+PathPoint primary_at(const Scenario& s, double t) { return s.targets[s.primary].path->at(t); }
+
+double speed_deg_s(const Scenario& s, double t) { return angular_speed(primary_at(s, t)) * kDegPerRad; }
+
+// The ramp's documented envelope of the peak speed per swing, deg/s.
+double ramp_envelope(double t) { return 5.0 + 195.0 * std::min(t, 120.0) / 120.0; }
+
+}  // namespace
+
+TEST_CASE("every named scenario exists, points the unit at its primary target and keeps the seed") {
+    REQUIRE(scenario_names().size() == 4);
+    for (std::string_view name : scenario_names()) {
+        const Scenario s = named(name);
+        CHECK(s.name == name);
+        CHECK(s.seed == 11);
+        REQUIRE(s.primary < s.targets.size());
+        const PathPoint start = primary_at(s, 0.0);
+        CHECK(s.initial_pan_rad == start.position.azimuth);
+        CHECK(s.initial_tilt_rad == start.position.elevation);
+    }
+    CHECK(named("crowd").targets.size() == 3);
+    CHECK_FALSE(make_scenario("nonesuch", 1));
+    CHECK_FALSE(make_scenario("", 1));
+}
+
+TEST_CASE("patrol: the walker crosses ±40° at 7–15 deg/s with pauses, and the second target comes and goes") {
+    const Scenario s = named("patrol");
+    REQUIRE(std::holds_alternative<WalkerShape>(s.targets[s.primary].shape));
+    double az_lo = 0, az_hi = 0, fastest = 0, paused_s = 0;
+    int second_present = 0;
+    constexpr double kStep = 0.05;
+    for (double t = 0; t < 120.0; t += kStep) {
+        const PathPoint at = primary_at(s, t);
+        az_lo = std::min(az_lo, at.position.azimuth * kDegPerRad);
+        az_hi = std::max(az_hi, at.position.azimuth * kDegPerRad);
+        const double speed = speed_deg_s(s, t);
+        fastest = std::max(fastest, speed);
+        if (speed == 0) paused_s += kStep;
+        second_present += s.targets[1].presence.at(t);
+    }
+    CHECK(az_lo == Approx(-40.0).margin(0.01));
+    CHECK(az_hi == Approx(40.0).margin(0.01));
+    CHECK(fastest == Approx(15.0).margin(0.01));
+    CHECK(paused_s > 15.0);
+    CHECK(second_present > 0.25 * 120 / kStep);
+    CHECK(second_present < 0.5 * 120 / kStep);
+    CHECK(s.exposure.gain(12.5) == Approx(1.12));  // a quarter of the 50 s drift
+}
+
+TEST_CASE("ramp: the peak speed of each swing grows from 5 to 200 deg/s over 120 s, as documented") {
+    const Scenario s = named("ramp");
+    CHECK(s.occluders.empty());
+    CHECK(speed_deg_s(s, 0.0) == Approx(5.0).epsilon(0.002));  // the swing's middle, no elevation motion
+    // The largest speed within windows of two swings (φ' = envelope / 30°) lies between the envelope
+    // at the window's ends, plus the elevation's sway of at most 1 deg/s.
+    for (double t : {5.0, 20.0, 45.0, 70.0, 95.0, 118.0, 125.0, 300.0, 1800.0}) {
+        const double rate = ramp_envelope(t) / 30.0;
+        const double window = 2 * std::numbers::pi / rate, lo = std::max(0.0, t - window / 2), hi = t + window / 2;
+        double fastest = 0;
+        for (double u = lo; u <= hi; u += window / 4000) fastest = std::max(fastest, speed_deg_s(s, u));
+        INFO("t = " << t);
+        CHECK(fastest >= 0.995 * ramp_envelope(lo));
+        CHECK(fastest <= ramp_envelope(hi) + 1.0);
+    }
+}
+
+TEST_CASE("soak: the target stays within ±100° azimuth and −10…+30° elevation at 2–20 deg/s for 30 minutes") {
+    const Scenario s = named("soak");
+    int samples = 0, slow = 0;
+    double fastest = 0;
+    for (double t = 0; t <= 1800.0; t += 0.5) {
+        const PathPoint at = primary_at(s, t);
+        const double speed = speed_deg_s(s, t);
+        INFO("t = " << t);
+        CHECK(std::abs(at.position.azimuth * kDegPerRad) <= 100.0);
+        CHECK(at.position.elevation * kDegPerRad >= -10.0);
+        CHECK(at.position.elevation * kDegPerRad <= 30.0);
+        fastest = std::max(fastest, speed);
+        slow += speed < 2.0;
+        ++samples;
+    }
+    CHECK(fastest <= 20.0);
+    CHECK(fastest >= 12.0);
+    CHECK(slow < samples / 10);
+}
+
+TEST_CASE("soak: the exposure drifts and steps down for the second half of every 240 s") {
+    const Scenario s = named("soak");
+    CHECK(s.exposure.gain(0.0) == Approx(1.0));
+    CHECK(s.exposure.gain(97.0 / 4) == Approx(1.15));
+    CHECK(s.exposure.gain(119.999) / s.exposure.gain(120.001) == Approx(1.0 / 0.75).epsilon(1e-4));
+    CHECK(s.exposure.gain(239.999) / s.exposure.gain(240.001) == Approx(0.75).epsilon(1e-4));
+}

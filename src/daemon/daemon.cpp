@@ -20,6 +20,7 @@
 #include "daemon/replay_source.hpp"
 #include "daemon/request_handler.hpp"
 #include "daemon/service_notifier.hpp"
+#include "daemon/sim_source.hpp"
 #include "daemon/v4l2_source.hpp"
 #include "drivers/calibrated_ptu.hpp"
 #include "drivers/mock/mock_ptu.hpp"
@@ -72,9 +73,10 @@ void block_daemon_signals() {
     std::signal(SIGPIPE, SIG_IGN);
 }
 
-std::unique_ptr<FrameSource> open_frame_source(const CameraSettings& camera, const Clock& clock, std::string& error) {
-    if (camera.source == "replay") return ReplaySource::open(camera, clock, error);
-    return V4l2Source::open(camera, clock, error);
+std::unique_ptr<FrameSource> open_frame_source(const DaemonConfig& config, const Clock& clock, std::string& error) {
+    if (config.camera.source == "sim") return SimSource::open(config, clock, error);
+    if (config.camera.source == "replay") return ReplaySource::open(config.camera, clock, error);
+    return V4l2Source::open(config.camera, clock, error);
 }
 
 
@@ -108,7 +110,7 @@ void Daemon::request_stop() {
 
 int Daemon::run() {
     std::string error;
-    if (!parts_.source) parts_.source = open_frame_source(config_.camera, clock_, error);
+    if (!parts_.source) parts_.source = open_frame_source(config_, clock_, error);
     if (!parts_.source) {
         log(Priority::Err, "camera: %s", error.c_str());
         return 1;
@@ -123,6 +125,7 @@ int Daemon::run() {
 
     running_ = std::make_unique<Running>(config_, *parts_.source, *parts_.ptu, parts_.observer, clock_);
     Running& r = *running_;
+    if (auto* sim = dynamic_cast<SimSource*>(parts_.source.get())) sim->follow(r.channels);
     if (ptu::DriverStatus status = r.limiter.configure(); !status.ok) {
         log(Priority::Err, "PTU %s: %s", parts_.ptu->name(), status.what());
         return 1;

@@ -23,8 +23,8 @@ struct DaemonParts {
 // thread and every thread started after; call before any thread starts.
 void block_daemon_signals();
 
-// The frame source [camera] describes; null with `error` when it cannot be opened.
-std::unique_ptr<FrameSource> open_frame_source(const CameraSettings& camera, const Clock& clock, std::string& error);
+// The frame source [camera] (and for the simulated camera [sim]) describes; null with `error` when it cannot be opened.
+std::unique_ptr<FrameSource> open_frame_source(const DaemonConfig& config, const Clock& clock, std::string& error);
 
 // Runs until SIGTERM/SIGINT (or request_stop() from another thread). Returns the exit status:
 // 0 after a clean stop, 1 when the camera, PTU or socket cannot be brought up.

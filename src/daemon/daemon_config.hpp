@@ -14,7 +14,7 @@
 namespace rays::daemon {
 
 struct CameraSettings {                   // [camera]: fixed at start
-    std::string source = "v4l2";          // v4l2 | replay
+    std::string source = "sim";           // sim | v4l2 | replay
     std::string device = "/dev/video0";   // V4L2 device node
     std::string format = "auto";          // auto | grey | yuyv | mjpeg
     int width = 640;                      // requested capture size; the driver may grant another
@@ -31,6 +31,13 @@ struct CameraSettings {                   // [camera]: fixed at start
     int queue_frames = 4;                 // frames buffered between capture and the frame loop
 };
 
+struct SimSettings {                      // [sim]: the simulated camera, fixed at start
+    std::string scenario = "patrol";      // patrol | soak | ramp | crowd
+    int seed = 1;                         // the world's and the noise's seed
+    double fps = 25.0;                    // frames per second rendered (paced in real time)
+    std::string panorama_png;             // the world as an equirectangular PNG; empty: generated from the seed
+};
+
 struct LoopSettings {                 // [loop]
     double budget_ms = 20.0;          // tunable: tracking deadline after the frame's capture time
     int rt_priority = 0;              // SCHED_FIFO priority of the frame loop, 0: normal scheduling
@@ -39,11 +46,25 @@ struct LoopSettings {                 // [loop]
 };
 
 struct ControlSettings {                 // [control]: tunables
+    std::string law = "predictive";      // proportional | predictive
     double horizontal_fov_deg = 60.0;    // camera field of view across the 128-pixel frame width
     double vertical_fov_deg = 60.0;      // ... and height (after any crop)
-    double gain = 2.0;                   // proportional gain: rad/s per rad of angular error
-    double deadband_deg = 0.5;           // errors smaller than this command zero velocity
-    bool stop_when_lost = true;          // stop the axes while no target is tracked
+    double fx_px = 0.0;                  // calibrated intrinsics in processing pixels; fx_px = 0: from the FOV
+    double fy_px = 0.0;
+    double cx_px = 63.5;
+    double cy_px = 63.5;
+    double gain = 4.0;                   // rad/s per rad of angular error
+    double deadband_deg = 0.3;           // errors smaller than this command zero velocity
+    double lead_ms = 20.0;               // predictive: aim this far ahead, beyond the unit's own latency
+    double target_accel_deg_s2 = 60.0;   // predictive: how hard targets accelerate (Kalman process noise)
+    double sighting_noise_px = 0.7;      // predictive: 1 σ of the contour centre's position
+    double still_deg_s = 0.3;            // the unit counts as still below this rate (frame differencing runs only then)
+    double coast_s = 1.0;                // predictive: follow the prediction this long after losing the contour
+    std::string lost_action = "hold";    // hold | search | home, after lost_timeout_s without a target
+    double lost_timeout_s = 3.0;
+    double search_step_deg = 20.0;       // search: pan step between poses
+    int search_steps = 3;                // search: poses on each side of where the target was lost
+    double search_dwell_s = 1.5;         // search: time at each pose
 };
 
 struct PtuMotion {                       // [ptu] tunables: limits enforced above every driver, and poses
@@ -93,6 +114,7 @@ struct LogSettings {                    // [log]
 struct DaemonConfig {
     TrackerConfig tracker;
     CameraSettings camera;
+    SimSettings sim;
     LoopSettings loop;
     ControlSettings control;
     PtuSettings ptu;

@@ -19,8 +19,8 @@ using config::ParamTable;
 
 void add_camera(ParamTable<DaemonConfig>& table) {
     table.section("camera", ParamKind::Capacity, &DaemonConfig::camera)
-        .add_choice("source", &CameraSettings::source, "v4l2|replay",
-                    "where frames come from: a V4L2 camera or a recorded sequence")
+        .add_choice("source", &CameraSettings::source, "sim|v4l2|replay",
+                    "where frames come from: the simulated pan/tilt camera ([sim]), a V4L2 camera or a recorded sequence")
         .add("device", &CameraSettings::device, "v4l2: the video device node")
         .add_choice("format", &CameraSettings::format, "auto|grey|yuyv|mjpeg",
                     "v4l2: pixel format (auto prefers grey, then yuyv, then mjpeg)")
@@ -42,6 +42,17 @@ void add_camera(ParamTable<DaemonConfig>& table) {
              "frames buffered between capture and tracking; a live camera drops the oldest when full");
 }
 
+void add_sim(ParamTable<DaemonConfig>& table) {
+    table.section("sim", ParamKind::Capacity, &DaemonConfig::sim)
+        .add_choice("scenario", &SimSettings::scenario, "patrol|soak|ramp|crowd",
+                    "what the simulated camera looks at: a walker patrolling (patrol), the 30-minute soak path, "
+                    "a target speeding up (ramp), several targets (crowd)")
+        .add("seed", &SimSettings::seed, "", 0, 1000000, "seed of the simulated world and its noise")
+        .add("fps", &SimSettings::fps, "1/s", 1, 200, "frames per second the simulated camera delivers")
+        .add("panorama_png", &SimSettings::panorama_png,
+             "the world as an equirectangular PNG (its width spans 360 degrees); empty: generated from the seed");
+}
+
 void add_loop(ParamTable<DaemonConfig>& table) {
     table.section("loop", ParamKind::Tunable, &DaemonConfig::loop)
         .add("budget_ms", &LoopSettings::budget_ms, "ms", 0.05, 1000,
@@ -55,14 +66,42 @@ void add_loop(ParamTable<DaemonConfig>& table) {
 
 void add_control(ParamTable<DaemonConfig>& table) {
     table.section("control", ParamKind::Tunable, &DaemonConfig::control)
+        .add_choice("law", &ControlSettings::law, "predictive|proportional",
+                    "predictive: Kalman filter on the target's world angles, velocity feed-forward, and the "
+                    "tracker's next reference point predicted; proportional: the paper's controller")
         .add("horizontal_fov_deg", &ControlSettings::horizontal_fov_deg, "deg", 1, 170,
              "field of view across the processed frame's width (after any crop)")
         .add("vertical_fov_deg", &ControlSettings::vertical_fov_deg, "deg", 1, 170,
              "field of view across the processed frame's height")
-        .add("gain", &ControlSettings::gain, "1/s", 0, 50, "proportional gain: velocity command per angular error")
+        .add("fx_px", &ControlSettings::fx_px, "px", 0, 100000,
+             "calibrated focal length across, in processed pixels; 0: from horizontal_fov_deg and vertical_fov_deg")
+        .add("fy_px", &ControlSettings::fy_px, "px", 0, 100000, "calibrated focal length down, in processed pixels")
+        .add("cx_px", &ControlSettings::cx_px, "px", -1000, 1000, "calibrated principal point x (with fx_px)")
+        .add("cy_px", &ControlSettings::cy_px, "px", -1000, 1000, "calibrated principal point y (with fx_px)")
+        .add("gain", &ControlSettings::gain, "1/s", 0, 50, "velocity command per angular error")
         .add("deadband_deg", &ControlSettings::deadband_deg, "deg", 0, 20,
-             "angular errors smaller than this command zero velocity on that axis")
-        .add("stop_when_lost", &ControlSettings::stop_when_lost, "stop the axes while no target is tracked");
+             "angular errors smaller than this command zero velocity on that axis (predictive: when the "
+             "target is also still)")
+        .add("lead_ms", &ControlSettings::lead_ms, "ms", 0, 1000,
+             "predictive: aim where target and unit will be this much later, beyond the unit's own latency")
+        .add("target_accel_deg_s2", &ControlSettings::target_accel_deg_s2, "deg/s^2", 0.01, 100000,
+             "predictive: how hard targets accelerate (the Kalman filter's process noise)")
+        .add("sighting_noise_px", &ControlSettings::sighting_noise_px, "px", 0.01, 100,
+             "predictive: 1 sigma of the contour centre's position (the Kalman filter's measurement noise)")
+        .add("still_deg_s", &ControlSettings::still_deg_s, "deg/s", 0, 100,
+             "the unit counts as still below this rate: frame differencing finds new targets only then")
+        .add("coast_s", &ControlSettings::coast_s, "s", 0, 60,
+             "predictive: after losing the contour, follow the prediction and look for the target where it "
+             "should be for this long")
+        .add_choice("lost_action", &ControlSettings::lost_action, "hold|search|home",
+                    "with no target for lost_timeout_s: keep holding still, search left and right, or go home")
+        .add("lost_timeout_s", &ControlSettings::lost_timeout_s, "s", 0, 3600,
+             "the unit holds still this long after losing the target (detection needs a still camera)")
+        .add("search_step_deg", &ControlSettings::search_step_deg, "deg", 0.1, 180, "search: pan step between poses")
+        .add("search_steps", &ControlSettings::search_steps, "", 1, 50,
+             "search: poses on each side of where the target was lost")
+        .add("search_dwell_s", &ControlSettings::search_dwell_s, "s", 0.1, 600,
+             "search: time at each pose, moving there included");
 }
 
 void add_ptu(ParamTable<DaemonConfig>& table) {
@@ -127,6 +166,7 @@ void add_log(ParamTable<DaemonConfig>& table) {
 ParamTable<DaemonConfig> build_daemon_params() {
     ParamTable<DaemonConfig> table;
     add_camera(table);
+    add_sim(table);
     table.include(config::tracker_params(), &DaemonConfig::tracker);
     add_loop(table);
     add_control(table);
@@ -167,6 +207,7 @@ std::string changed_capacities(const DaemonConfig& a, const DaemonConfig& b) {
 
 DaemonConfig rig_template() {
     DaemonConfig config;
+    config.camera.source = "v4l2";
     config.ptu.driver = "modbus";
     config.modbus.transport = "rtu";
     config.modbus.device = "/dev/ttyUSB0";

@@ -6,7 +6,7 @@
 #include <thread>
 
 #include "common/angles.hpp"
-#include "control/pointing.hpp"
+#include "snake/tracker_factory.hpp"
 
 namespace rays::daemon {
 namespace {
@@ -47,13 +47,36 @@ FrameLoop::FrameLoop(const DaemonConfig& config, LoopChannels& channels, ptu::Pt
       notifier_(notifier),
       clock_(clock),
       observer_(observer),
-      tracker_(config.tracker, clock),
+      tracker_(make_tracker(config.tracker, clock)),
       tunables_(loop_tunables(config)),
+      proportional_(control::CameraModel::from_intrinsics(tunables_.control.intrinsics), tunables_.control.controller),
+      predictive_(control::CameraModel::from_intrinsics(tunables_.control.intrinsics), tunables_.control.controller,
+                  tunables_.control.filter),
+      controller_(nullptr),
       require_homing_(config.ptu.require_homing),
       frame_timeout_(std::chrono::duration_cast<std::chrono::nanoseconds>(Seconds(config.camera.frame_timeout_s))),
       wait_(std::chrono::duration_cast<std::chrono::nanoseconds>(std::min(kLongestWait, Seconds(config.camera.frame_timeout_s)))),
       started_(clock.now()) {
     ptu_.set_limits(limits_of(tunables_.ptu));
+    set_controllers();
+}
+
+void FrameLoop::set_controllers() {
+    control::CameraModel camera = control::CameraModel::from_intrinsics(tunables_.control.intrinsics);
+    control::ControllerSettings settings = tunables_.control.controller;
+    settings.lead_s += ptu_.command_latency_s();
+    proportional_ = control::ProportionalController(camera, settings);
+    predictive_ = control::PredictiveController(camera, settings, tunables_.control.filter);
+    controller_ = tunables_.control.predictive ? static_cast<control::Controller*>(&predictive_) : &proportional_;
+    lost_policy_.set_settings(tunables_.control.lost);
+}
+
+double FrameLoop::seconds(TimePoint t) const { return Seconds(t - started_).count(); }
+
+control::UnitPose FrameLoop::unit_pose(TimePoint t) const {
+    control::UnitPose reported{seconds(unit_.stamp), unit_.axes[0].position_rad, unit_.axes[1].position_rad,
+                               unit_.axes[0].velocity_rad_s, unit_.axes[1].velocity_rad_s};
+    return reported.at(seconds(t));
 }
 
 void FrameLoop::run() {
@@ -85,11 +108,17 @@ void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
     switch (command.kind) {
     case CommandKind::Tunables: apply_tunables(command.tunables); return;
     case CommandKind::Track:
-        tracker_.start_at({command.a, command.b});
+        tracker_->start_at({command.a, command.b});
         mode_ = ControlMode::Automatic;
         return;
-    case CommandKind::Release: tracker_.release(); return;
-    case CommandKind::Reinit: tracker_.reinit(); return;
+    case CommandKind::Release:
+        tracker_->release();
+        controller_->lost();
+        return;
+    case CommandKind::Reinit:
+        tracker_->reinit();
+        controller_->lost();
+        return;
     case CommandKind::Resume: mode_ = ControlMode::Automatic; return;
     case CommandKind::Jog:
         manual_ = {};
@@ -114,12 +143,13 @@ void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
 }
 
 void FrameLoop::apply_tunables(const LoopTunables& tunables) {
-    if (!tracker_.set_tunables(tunables.tracker)) {
+    if (!tracker_->set_tunables(tunables.tracker)) {
         channels_.log.log(Priority::Err, "new tracker settings do not fit the capacities; kept the old ones");
         return;
     }
     tunables_ = tunables;
     ptu_.set_limits(limits_of(tunables_.ptu));
+    set_controllers();
 }
 
 void FrameLoop::track_frame(TimePoint now) {
@@ -129,8 +159,28 @@ void FrameLoop::track_frame(TimePoint now) {
     if (deadline <= now) ++stats_.late_frames;
     last_frame_at_ = now;
     TimePoint begin = clock_.now();
-    const FrameResult& result = tracker_.process(frame_.image, deadline);
-    const Contour& contour = tracker_.contour();
+    const control::UnitPose at_capture = unit_pose(frame_.stamp);
+    const bool still = std::abs(at_capture.pan_rate) <= tunables_.control.still_rad_s &&
+                       std::abs(at_capture.tilt_rate) <= tunables_.control.still_rad_s;
+    tracker_->allow_detection(still && still_at_last_frame_);  // ego-motion: difference only still views
+    still_at_last_frame_ = still;
+    const bool coasting = !telemetry_.has_contour && controller_->has_target();
+    if (std::optional<Point> expected = controller_->expected_pixel(at_capture)) {
+        if (coasting) tracker_->start_at(*expected);  // look again where the target should be by now
+        else tracker_->predict_next(*expected);
+    }
+    const FrameResult& result = tracker_->process(frame_.image, deadline);
+    const Contour& contour = tracker_->contour();
+    if (result.has_contour) {
+        controller_->sighted(contour.centroid, at_capture);
+        last_sighting_s_ = at_capture.t_s;
+    } else if (controller_->has_target() &&
+               (!controller_->expected_pixel(at_capture) ||
+                at_capture.t_s - last_sighting_s_ > tunables_.control.coast_s)) {
+        // A target the controller cannot predict is lost at once; a predicted one after coast_s.
+        controller_->lost();
+        lost_policy_.lost_at(at_capture.t_s, at_capture.pan, at_capture.tilt);
+    }
     telemetry_.frame = frame_.index;
     telemetry_.time_s = Seconds(frame_.stamp - started_).count();
     telemetry_.state = result.state;
@@ -155,14 +205,9 @@ ptu::PtuCommand FrameLoop::next_command(TimePoint now) const {
         return manual_;
     }
     if (!camera_was_connected_ || now - last_frame_at_ > frame_timeout_) return ptu::PtuCommand::stop();
-    if (!telemetry_.has_contour) {
-        if (tunables_.control.stop_when_lost) return ptu::PtuCommand::stop();
-        return commanded_;
-    }
-    control::FieldOfView fov{tunables_.control.horizontal_fov_deg * kRadPerDeg,
-                             tunables_.control.vertical_fov_deg * kRadPerDeg};
-    control::AngularOffset offset = control::pixel_to_angle({telemetry_.ref_x, telemetry_.ref_y}, fov);
-    return control::proportional_command(offset, tunables_.control.gain, tunables_.control.deadband_deg * kRadPerDeg);
+    // While coasting the controller follows its prediction; once it has let go, the lost policy.
+    if (!telemetry_.has_contour && !controller_->has_target()) return lost_policy_.command(seconds(now));
+    return controller_->command(unit_pose(now));
 }
 
 void FrameLoop::drive_unit(TimePoint now) {
@@ -208,7 +253,7 @@ void FrameLoop::publish(TimePoint now, TimePoint step_start) {
         if (!channels_.telemetry.push(telemetry_)) ++stats_.telemetry_dropped;
         if (observer_ != nullptr) observer_->on_frame(telemetry_);
         channels_.snapshot.try_publish([&](SnapshotFrame& snap) {
-            const Contour& contour = tracker_.contour();
+            const Contour& contour = tracker_->contour();
             snap.frame = frame_.index;
             snap.image = frame_.image;
             snap.has_contour = telemetry_.has_contour;

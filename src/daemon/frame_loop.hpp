@@ -2,11 +2,22 @@
 // track with deadline = capture time + budget → control → limited PTU write and state read →
 // telemetry, status and snapshot out → watchdog. Nothing here allocates, blocks on I/O or throws
 // once run() has started.
+//
+// Around the tracker: the controller predicts where the target will show in each frame (from the
+// unit's pose at capture), and frame differencing may find a new target only when the unit stood
+// still from the previous frame's capture to this one's (ego-motion). When the contour is lost, a
+// predictive controller coasts on its prediction for control.coast_s, and the tracker is restarted
+// where the target should be; after that, or at once without prediction, the lost policy holds,
+// searches or goes home.
 #pragma once
 #include <chrono>
+#include <memory>
 
+#include "control/lost_policy.hpp"
+#include "control/predictive_controller.hpp"
+#include "control/proportional_controller.hpp"
 #include "core/clock.hpp"
-#include "core/tracker.hpp"
+#include "core/contour_tracker.hpp"
 #include "daemon/loop_channels.hpp"
 #include "daemon/service_notifier.hpp"
 #include "drivers/ptu_limiter.hpp"
@@ -37,6 +48,9 @@ private:
     void apply_tunables(const LoopTunables& tunables);
     void track_frame(TimePoint now);
     ptu::PtuCommand next_command(TimePoint now) const;
+    double seconds(TimePoint t) const;
+    control::UnitPose unit_pose(TimePoint t) const;  // the unit's last reported state, extrapolated to t
+    void set_controllers();
     void drive_unit(TimePoint now);
     void publish(TimePoint now, TimePoint step_start);
     void record_times(float loop_us);
@@ -46,8 +60,14 @@ private:
     ServiceNotifier& notifier_;
     const Clock& clock_;
     FrameObserver* observer_;
-    Tracker tracker_;
+    std::unique_ptr<ContourTracker> tracker_;
     LoopTunables tunables_;
+    control::ProportionalController proportional_;
+    control::PredictiveController predictive_;
+    control::Controller* controller_;  // one of the two, by control.law
+    control::LostPolicy lost_policy_;
+    double last_sighting_s_ = 0.0;  // capture time of the last frame with a contour
+    bool still_at_last_frame_ = false;
     bool require_homing_;
     std::chrono::nanoseconds frame_timeout_;  // no frame for this long: the axes stop
     std::chrono::nanoseconds wait_;           // longest wait for a frame: the unit gets a write this often

@@ -6,7 +6,7 @@ LoopTunables loop_tunables(const DaemonConfig& config) {
     LoopTunables tunables;
     tunables.tracker = config.tracker.tunables;
     tunables.budget_ms = config.loop.budget_ms;
-    tunables.control = config.control;
+    tunables.control = control_tunables(config.control, config.ptu.motion);
     tunables.ptu = config.ptu.motion;
     return tunables;
 }

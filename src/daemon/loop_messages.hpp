@@ -7,7 +7,8 @@
 
 #include "core/clock.hpp"
 #include "core/image.hpp"
-#include "core/tracker.hpp"
+#include "core/contour_tracker.hpp"
+#include "daemon/control_tunables.hpp"
 #include "daemon/daemon_config.hpp"
 #include "drivers/ptu_driver.hpp"
 
@@ -17,7 +18,7 @@ namespace rays::daemon {
 struct LoopTunables {
     TrackerTunables tracker;
     double budget_ms = 20.0;
-    ControlSettings control;
+    ControlTunables control;
     PtuMotion ptu;
 };
 LoopTunables loop_tunables(const DaemonConfig& config);

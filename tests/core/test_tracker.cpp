@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -145,4 +146,35 @@ TEST_CASE("Tracker tunables change only within the capacities", "[tracker]") {
     REQUIRE(run.step(*s, 0) == TrackState::Tracking);
     CHECK(run.tracker->contour().size == 180);
     CHECK(run.iou() >= 0.85);
+}
+
+TEST_CASE("Tracker runs no frame differencing while detection is not allowed (a moving camera)", "[tracker]") {
+    const auto s = scene("disc");
+    Run run;
+    run.tracker->allow_detection(false);
+    for (int i = 0; i < 10; ++i) {
+        INFO("frame " << i);
+        CHECK(run.step(*s, i) == TrackState::Detecting);
+        CHECK(run.tracker->result().detection.passes == 0);  // the detector did not run
+    }
+    run.tracker->allow_detection(true);
+    CHECK(run.step(*s, 10) == TrackState::Tracking);
+}
+
+TEST_CASE("Tracker follows a jump it was told to expect (predict_next)", "[tracker]") {
+    // The disc scene's frames 0 and 40 are far apart: shown in turn, the target jumps. Told where it
+    // will be, the tracker keeps it; left to its own constant-velocity guess, it does not.
+    const auto s = scene("disc");
+    auto frame = std::make_unique<SceneFrame>();
+    s->render(40, *frame);
+    const Point there{frame->truth.cx, frame->truth.cy};
+    REQUIRE(std::hypot(there.x - s->init().x, there.y - s->init().y) > 30.0);
+    for (bool told : {true, false}) {
+        Run run;
+        run.tracker->start_at(s->init());
+        REQUIRE(run.step(*s, 0) == TrackState::Tracking);
+        if (told) run.tracker->predict_next(there);
+        const bool kept = run.step(*s, 40) == TrackState::Tracking && run.iou() >= 0.8;
+        CHECK(kept == told);
+    }
 }

@@ -1,0 +1,103 @@
+#include "closed_loop.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include "common/angles.hpp"
+#include "control/camera_model.hpp"
+#include "daemon/frame_loop.hpp"
+#include "daemon/loop_channels.hpp"
+#include "daemon/ptu_factory.hpp"
+#include "daemon/service_notifier.hpp"
+#include "drivers/calibrated_ptu.hpp"
+#include "daemon/sim_source.hpp"
+#include "drivers/ptu_limiter.hpp"
+#include "soak_clock.hpp"
+
+namespace rays::soak {
+namespace {
+
+using Seconds = std::chrono::duration<double>;
+
+class LastFrame final : public daemon::FrameObserver {
+public:
+    void on_frame(const daemon::FrameTelemetry& frame) override { last = frame; }
+    daemon::FrameTelemetry last;
+};
+
+std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const daemon::PtuSettings& p) {
+    return {{{p.pan_inverted, p.pan_zero_deg * kRadPerDeg}, {p.tilt_inverted, p.tilt_zero_deg * kRadPerDeg}}};
+}
+
+}  // namespace
+
+std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
+    const daemon::DaemonConfig& config = run.config;
+    std::unique_ptr<sim::SimCamera> sim_camera = daemon::make_sim_camera(config, error);
+    if (!sim_camera) return {};
+
+    SoakClock clock;
+    std::unique_ptr<ptu::PtuDriver> driver = daemon::make_ptu_driver(config, clock, error);
+    if (!driver) return {};
+    daemon::ServiceNotifier notifier;
+    daemon::LoopChannels channels(config.camera.queue_frames);
+    ptu::CalibratedPtu calibrated(*driver, calibration_of(config.ptu));
+    ptu::PtuLimiter limiter(calibrated);
+    LastFrame observer;
+    auto loop = std::make_unique<daemon::FrameLoop>(config, channels, limiter, notifier, clock, &observer);
+    if (ptu::DriverStatus status = limiter.configure(); !status.ok) {
+        error = std::string("PTU: ") + status.what();
+        return {};
+    }
+    if (ptu::DriverStatus status = limiter.activate(); !status.ok) {
+        error = std::string("PTU: ") + status.what();
+        return {};
+    }
+    channels.camera_connected.store(true);
+
+    // The simulated rig is mounted facing the scenario's start: its pan/tilt zero looks there.
+    const double pan0 = sim_camera->scenario().initial_pan_rad, tilt0 = sim_camera->scenario().initial_tilt_rad;
+    const TimePoint origin = clock.now();
+    auto view = std::make_unique<sim::SimView>();
+    auto captured = std::make_unique<daemon::CapturedFrame>();
+    std::vector<SoakFrame> frames;
+    frames.reserve(static_cast<std::size_t>(run.frames));
+    for (long k = 0; k < run.frames; ++k) {
+        const double t = static_cast<double>(k) / config.sim.fps;
+        clock.set(origin + std::chrono::duration_cast<TimePoint::duration>(Seconds(t)));
+        ptu::PtuState unit;
+        calibrated.read(unit, clock.now());
+        const double pan = unit.axes[0].position_rad, tilt = unit.axes[1].position_rad;
+        sim_camera->render(t, pan + pan0, tilt + tilt0, *view);
+        captured->image = view->image;
+        captured->index = k;
+        captured->stamp = clock.now();
+        channels.frames.push(*captured, true, std::chrono::milliseconds(0));
+        loop->step();
+        if (k % 256 == 0) channels.log.drain();
+
+        const sim::SimTruth& truth = view->truth;
+        SoakFrame f;
+        f.t_s = t;
+        f.truth_px = truth.visible_fraction > 0.5 ? truth.mask_centroid_px : truth.centre_px;
+        f.target_in_image = truth.in_view && f.truth_px.x >= -0.5 && f.truth_px.x <= kFrameSize - 0.5 &&
+                            f.truth_px.y >= -0.5 && f.truth_px.y <= kFrameSize - 0.5;
+        f.has_contour = observer.last.frame == k && observer.last.has_contour;
+        f.contour_px = {observer.last.ref_x, observer.last.ref_y};
+        f.speed_deg_s = truth.speed_deg_s;
+        f.speed_px_frame = truth.speed_px_per_s / config.sim.fps;
+        f.latency_us = observer.last.latency_us;
+        f.pan_deg = pan * kDegPerRad;
+        f.tilt_deg = tilt * kDegPerRad;
+        f.pan_rate_deg_s = unit.axes[0].velocity_rad_s * kDegPerRad;
+        f.tilt_rate_deg_s = unit.axes[1].velocity_rad_s * kDegPerRad;
+        f.target_az_deg = control::angle_difference(truth.target.azimuth, pan0) * kDegPerRad;
+        f.target_el_deg = (truth.target.elevation - tilt0) * kDegPerRad;
+        frames.push_back(f);
+    }
+    loop->stop_unit();
+    channels.log.drain();
+    return frames;
+}
+
+}  // namespace rays::soak

@@ -1,0 +1,24 @@
+// rays-soak's clock: simulated time between frames, real time within one. set() jumps to a frame's
+// capture time; from there now() runs on with the steady clock, so the tracker's deadline is a real
+// per-frame budget while the run as a whole goes faster than real time. Never runs backwards.
+#pragma once
+#include <algorithm>
+
+#include "core/clock.hpp"
+
+namespace rays::soak {
+
+class SoakClock final : public Clock {
+public:
+    void set(TimePoint simulated) {
+        base_ = std::max(simulated, now());
+        mark_ = MonoClock::now();
+    }
+    TimePoint now() const override { return base_ + (MonoClock::now() - mark_); }
+
+private:
+    TimePoint base_{};
+    TimePoint mark_ = MonoClock::now();
+};
+
+}  // namespace rays::soak

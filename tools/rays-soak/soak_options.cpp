@@ -1,0 +1,86 @@
+#include "soak_options.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+
+namespace rays::soak {
+namespace {
+
+template <class T>
+std::optional<T> number(std::string_view text) {
+    T value{};
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc{} || end != text.data() + text.size()) return std::nullopt;
+    return value;
+}
+
+std::optional<double> positive(std::string_view text) {
+    std::optional<double> v = number<double>(text);
+    if (!v || !std::isfinite(*v) || *v <= 0) return std::nullopt;
+    return v;
+}
+
+}  // namespace
+
+std::optional<std::string> parse_options(int argc, const char* const* argv, SoakOptions& out) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view arg = argv[i];
+        if (arg == "--json") {
+            out.json = true;
+            continue;
+        }
+        if (arg == "--help" || arg == "-h") {
+            out.help = true;
+            continue;
+        }
+        static constexpr std::string_view kValued[] = {"--frames", "--scenario", "--seed", "--config", "--law",
+                                                       "--method", "--gain", "--sweep-gain", "--budget-ms", "--plot", "--trace"};
+        if (std::find(std::begin(kValued), std::end(kValued), arg) == std::end(kValued))
+            return "unknown argument '" + std::string(arg) + "'";
+        if (i + 1 == argc) return std::string(arg) + " needs a value";
+        const std::string_view value = argv[++i];
+        const std::string bad = std::string(arg) + ": bad value '" + std::string(value) + "'";
+        if (arg == "--frames") {
+            std::optional<long> n = number<long>(value);
+            if (!n || *n <= 0) return bad + " (a positive integer)";
+            out.frames = *n;
+        } else if (arg == "--seed") {
+            std::optional<int> n = number<int>(value);
+            if (!n || *n < 0) return bad + " (an integer ≥ 0)";
+            out.seed = *n;
+        } else if (arg == "--scenario") {
+            out.scenario = value;
+        } else if (arg == "--config") {
+            out.config_path = value;
+        } else if (arg == "--plot") {
+            out.plot_path = value;
+        } else if (arg == "--trace") {
+            out.trace_path = value;
+        } else if (arg == "--law") {
+            if (value != "predictive" && value != "proportional") return bad + " (predictive or proportional)";
+            out.law = std::string(value);
+        } else if (arg == "--method") {
+            if (value != "rays" && value != "snake") return bad + " (rays or snake)";
+            out.method = std::string(value);
+        } else if (arg == "--gain" || arg == "--budget-ms") {
+            std::optional<double> v = positive(value);
+            if (!v) return bad + " (a positive number)";
+            (arg == "--gain" ? out.gain : out.budget_ms) = *v;
+        } else {  // --sweep-gain
+            std::string_view rest = value;
+            while (!rest.empty()) {
+                std::size_t comma = rest.find(',');
+                std::optional<double> v = positive(rest.substr(0, comma));
+                if (!v) return bad + " (positive numbers separated by commas)";
+                out.sweep_gains.push_back(*v);
+                rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+            }
+        }
+    }
+    if (out.gain && !out.sweep_gains.empty()) return "--gain and --sweep-gain exclude each other";
+    return std::nullopt;
+}
+
+}  // namespace rays::soak

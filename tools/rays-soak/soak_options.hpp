@@ -1,0 +1,33 @@
+// Command line of rays-soak.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rays::soak {
+
+inline constexpr const char* kUsage =
+    "usage: rays-soak [--frames N] [--scenario soak|ramp|patrol|crowd] [--seed N] [--config FILE.ini]\n"
+    "                 [--law predictive|proportional] [--method rays|snake] [--gain G | --sweep-gain G1,G2,...]\n"
+    "                 [--budget-ms B] [--json] [--plot FILE.png] [--trace FILE.csv]";
+
+struct SoakOptions {
+    long frames = 45000;
+    std::string scenario = "soak";
+    std::optional<int> seed;
+    std::string config_path;          // empty: raysd's built-in defaults
+    std::optional<std::string> law;   // overrides control.law
+    std::optional<std::string> method;  // overrides track.method
+    std::optional<double> gain;       // overrides control.gain
+    std::vector<double> sweep_gains;  // one run per gain
+    std::optional<double> budget_ms;  // overrides loop.budget_ms
+    bool json = false;
+    std::string plot_path;
+    std::string trace_path;           // one CSV row per frame
+    bool help = false;
+};
+
+// Fills `out` from the arguments; on a bad argument returns a one-line message.
+std::optional<std::string> parse_options(int argc, const char* const* argv, SoakOptions& out);
+
+}  // namespace rays::soak

@@ -109,16 +109,17 @@ Scenario soak() {
     return s;
 }
 
-// Speed ramp: a textured disc 8° across swinging in azimuth as 30°·sin φ(t), the rate of φ rising
-// linearly from 1/6 rad/s at t = 0 to 20/3 rad/s at t = 120 s and staying there (Wave's chirp), so
-// the peak speed of each swing, 30°·φ'(t), grows from 5 deg/s to 200 deg/s over 120 s:
-//   peak azimuth speed(t) = 5 + 195·min(t, 120)/120 deg/s.
-// The elevation sways as 2°·cos(t/2 s⁻¹), adding at most 1 deg/s. No occluders, mild noise, fixed
-// exposure.
+// Speed ramp: a textured disc 8° across swinging in azimuth as 80°·sin φ(t) — wider than the field of
+// view, so a camera that cannot keep up loses it — the rate of φ rising linearly from 1/16 rad/s at
+// t = 0 to 5/2 rad/s at t = 120 s and staying there (Wave's chirp), so the peak speed of each swing,
+// 80°·φ'(t), grows from 5 deg/s to 200 deg/s over 120 s:
+//   peak azimuth rate(t) = 5 + 195·min(t, 120)/120 deg/s (angular speed: cos 12° = 0.978 times that).
+// The elevation sways as 2°·cos(t/2 s⁻¹) around −12° (the ground, below the buildings: the ramp
+// measures speed, not clutter), adding at most 1 deg/s. No occluders, mild noise, fixed exposure.
 Scenario ramp() {
     Scenario s;
-    const Wave sweep{deg(30), 1.0 / 6.0, 20.0 / 3.0, 120.0, 0.0};
-    const auto path = waves_deg(0, 0, {sweep}, {wave_deg(2, 4 * std::numbers::pi, std::numbers::pi / 2)});
+    const Wave sweep{deg(80), 1.0 / 16.0, 5.0 / 2.0, 120.0, 0.0};
+    const auto path = waves_deg(0, -12, {sweep}, {wave_deg(2, 4 * std::numbers::pi, std::numbers::pi / 2)});
     s.targets.push_back({DiscShape{8}, 55, 25, 1.5, path, {}});
     s.noise_sigma = 2;
     return s;

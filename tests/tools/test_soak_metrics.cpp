@@ -80,3 +80,12 @@ TEST_CASE("centred counts the true centre within 10 % of the image size of the f
     CHECK(s.centred_fraction == 0.5);
     CHECK(s.on_target_fraction == 1.0);
 }
+
+TEST_CASE("frames before the target is first on target are acquisition, not a loss") {
+    std::vector<SoakFrame> frames = steady(40);
+    for (int k = 0; k < 12; ++k) frames[static_cast<std::size_t>(k)].has_contour = false;
+    SoakSummary s = summarise(frames);
+    CHECK(s.acquired_s == Approx(12 * 0.04));
+    CHECK(s.losses.empty());
+    CHECK(s.max_speed_deg_s == 39.0);
+}

@@ -1,6 +1,7 @@
 #include "closed_loop.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "common/angles.hpp"
@@ -12,6 +13,8 @@
 #include "drivers/calibrated_ptu.hpp"
 #include "daemon/sim_source.hpp"
 #include "drivers/ptu_limiter.hpp"
+#include "io/overlay.hpp"
+#include "io/png_writer.hpp"
 #include "soak_clock.hpp"
 
 namespace rays::soak {
@@ -24,6 +27,24 @@ public:
     void on_frame(const daemon::FrameTelemetry& frame) override { last = frame; }
     daemon::FrameTelemetry last;
 };
+
+// The frame as the loop saw it: its contour (green) and centre (blue), the true centre (red).
+void write_overlay(const std::string& dir, long index, const daemon::LoopChannels& channels, Point truth) {
+    channels.snapshot.read([&](const daemon::SnapshotFrame& snap) {
+        io::RgbCanvas canvas(snap.image, 4);
+        if (snap.has_contour) {
+            std::vector<Point> contour(snap.contour.begin(), snap.contour.begin() + snap.points);
+            canvas.polygon(contour, {40, 220, 40});
+            canvas.cross(snap.ref, 8, {60, 60, 255});
+        }
+        canvas.cross(truth, 8, {255, 40, 40});
+        char path[512];
+        std::snprintf(path, sizeof path, "%s/frame-%06ld.png", dir.c_str(), index);
+        std::string error;
+        if (!io::write_png(path, canvas.width(), canvas.height(), 3, canvas.rgb().data(), error))
+            std::fprintf(stderr, "rays-soak: %s: %s\n", path, error.c_str());
+    });
+}
 
 std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const daemon::PtuSettings& p) {
     return {{{p.pan_inverted, p.pan_zero_deg * kRadPerDeg}, {p.tilt_inverted, p.tilt_zero_deg * kRadPerDeg}}};
@@ -73,6 +94,9 @@ std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
         captured->index = k;
         captured->stamp = clock.now();
         channels.frames.push(*captured, true, std::chrono::milliseconds(0));
+        if (k == 0 && run.start_at_truth)
+            channels.commands.push(daemon::make_command(daemon::CommandKind::Track, view->truth.mask_centroid_px.x,
+                                                        view->truth.mask_centroid_px.y));
         loop->step();
         if (k % 256 == 0) channels.log.drain();
 
@@ -94,6 +118,8 @@ std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
         f.target_az_deg = control::angle_difference(truth.target.azimuth, pan0) * kDegPerRad;
         f.target_el_deg = (truth.target.elevation - tilt0) * kDegPerRad;
         frames.push_back(f);
+        if (!run.overlay_dir.empty() && t >= run.overlay_from_s && t <= run.overlay_to_s)
+            write_overlay(run.overlay_dir, k, channels, f.truth_px);
     }
     loop->stop_unit();
     channels.log.drain();

@@ -13,6 +13,10 @@ namespace rays::soak {
 struct SoakRun {
     daemon::DaemonConfig config;  // tracker, control, ptu limits, mock dynamics, sim scenario/seed/fps
     long frames = 45000;
+    bool start_at_truth = true;  // the first frame's true target centre is given as a start point (as
+                                 // `raysctl track X Y` would); false: the tracker detects it by itself
+    std::string overlay_dir;  // when set, frames within the window are written there as PNG
+    double overlay_from_s = 0, overlay_to_s = 0;
 };
 
 // The frames' records; empty with `error` set when the run could not start.

@@ -19,6 +19,7 @@ nlohmann::json summary_json(const SoakSummary& s) {
     nlohmann::json reacquire = nlohmann::json::array();
     for (const Loss& loss : s.losses) reacquire.push_back(loss.reacquire_s);
     return {{"frames", s.frames},
+            {"acquired_s", s.acquired_s},
             {"losses", s.losses.size()},
             {"centred_fraction", s.centred_fraction},
             {"on_target_fraction", s.on_target_fraction},
@@ -46,8 +47,8 @@ void print_summary(const daemon::DaemonConfig& c, const SoakSummary& s) {
                 c.sim.scenario.c_str(), c.sim.seed, s.frames, c.sim.fps,
                 c.tracker.method == TrackerMethod::Snake ? "snake" : "rays", c.control.law.c_str(), c.control.gain,
                 c.loop.budget_ms);
-    std::printf("  losses %zu, centred %.1f %%, contour on target %.1f %%\n", s.losses.size(),
-                100 * s.centred_fraction, 100 * s.on_target_fraction);
+    std::printf("  acquired at %.2f s; losses %zu, centred %.1f %%, contour on target %.1f %%\n", s.acquired_s,
+                s.losses.size(), 100 * s.centred_fraction, 100 * s.on_target_fraction);
     std::printf("  fastest target kept: %.1f deg/s (%.2f px/frame)\n", s.max_speed_deg_s, s.max_speed_px_frame);
     for (const Loss& loss : s.losses) {
         if (loss.reacquire_s < 0) std::printf("  lost at %.2f s, not re-acquired\n", loss.start_s);
@@ -74,6 +75,9 @@ int main(int argc, char** argv) {
     }
     SoakRun run;
     run.frames = options.frames;
+    run.overlay_dir = options.overlay_dir;
+    run.overlay_from_s = options.overlay_from_s;
+    run.overlay_to_s = options.overlay_to_s;
     if (!options.config_path.empty()) {
         if (auto problem = daemon::load_daemon_config(options.config_path, run.config)) {
             std::fprintf(stderr, "rays-soak: %s\n", problem->to_string().c_str());

@@ -41,8 +41,11 @@ SoakSummary summarise(const std::vector<SoakFrame>& frames) {
         const bool on = on_target(f);
         if (f.target_in_image && distance(f.truth_px, {kCentre, kCentre}) <= kOnTargetPx) ++centred;
         if (on) ++tracked;
+        if (on && s.acquired_s < 0) s.acquired_s = f.t_s;
         off_run = on ? 0 : off_run + 1;
-        if (!lost && (!f.target_in_image || off_run > kOffFramesForLoss)) {
+        if (s.acquired_s < 0) {
+            off_run = 0;  // still acquiring
+        } else if (!lost && (!f.target_in_image || off_run > kOffFramesForLoss)) {
             lost = seen_loss = true;
             s.losses.push_back({frames[k + 1 - static_cast<std::size_t>(std::max(off_run, 1))].t_s, -1});
         } else if (lost && on) {

@@ -1,6 +1,7 @@
 // What a closed-loop run achieved, judged only against the simulator's ground truth, never the
 // tracker's own state. A loss is the true target centre leaving the image, or the contour's centre
-// more than 10 % of the image size from the true centre (or no contour) for more than 5 frames.
+// more than 10 % of the image size from the true centre (or no contour) for more than 5 frames,
+// counted from the first frame on target (before it, the target is being acquired).
 #pragma once
 #include <vector>
 
@@ -32,6 +33,7 @@ struct Loss {
 
 struct SoakSummary {
     long frames = 0;
+    double acquired_s = -1;        // first frame on target; < 0: never
     std::vector<Loss> losses;
     double centred_fraction = 0;   // frames with the true centre within 10 % of the image size of the centre
     double on_target_fraction = 0; // frames with the contour's centre within 10 % of the true centre

@@ -36,7 +36,7 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             continue;
         }
         static constexpr std::string_view kValued[] = {"--frames", "--scenario", "--seed", "--config", "--law",
-                                                       "--method", "--gain", "--sweep-gain", "--budget-ms", "--plot", "--trace"};
+                                                       "--method", "--gain", "--sweep-gain", "--budget-ms", "--plot", "--trace", "--overlay", "--overlay-window"};
         if (std::find(std::begin(kValued), std::end(kValued), arg) == std::end(kValued))
             return "unknown argument '" + std::string(arg) + "'";
         if (i + 1 == argc) return std::string(arg) + " needs a value";
@@ -58,6 +58,15 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             out.plot_path = value;
         } else if (arg == "--trace") {
             out.trace_path = value;
+        } else if (arg == "--overlay") {
+            out.overlay_dir = value;
+        } else if (arg == "--overlay-window") {
+            const std::size_t comma = value.find(',');
+            std::optional<double> from = number<double>(value.substr(0, comma));
+            std::optional<double> to = comma == std::string_view::npos ? std::nullopt : number<double>(value.substr(comma + 1));
+            if (!from || !to || *from < 0 || *to < *from) return bad + " (FROM_S,TO_S with 0 <= FROM_S <= TO_S)";
+            out.overlay_from_s = *from;
+            out.overlay_to_s = *to;
         } else if (arg == "--law") {
             if (value != "predictive" && value != "proportional") return bad + " (predictive or proportional)";
             out.law = std::string(value);

@@ -9,7 +9,8 @@ namespace rays::soak {
 inline constexpr const char* kUsage =
     "usage: rays-soak [--frames N] [--scenario soak|ramp|patrol|crowd] [--seed N] [--config FILE.ini]\n"
     "                 [--law predictive|proportional] [--method rays|snake] [--gain G | --sweep-gain G1,G2,...]\n"
-    "                 [--budget-ms B] [--json] [--plot FILE.png] [--trace FILE.csv]";
+    "                 [--budget-ms B] [--json] [--plot FILE.png] [--trace FILE.csv]\n"
+    "                 [--overlay DIR [--overlay-window FROM_S,TO_S]]";
 
 struct SoakOptions {
     long frames = 45000;
@@ -24,6 +25,8 @@ struct SoakOptions {
     bool json = false;
     std::string plot_path;
     std::string trace_path;           // one CSV row per frame
+    std::string overlay_dir;          // PNG per frame: the view, the contour, the true centre
+    double overlay_from_s = 0, overlay_to_s = 1e300;
     bool help = false;
 };
 

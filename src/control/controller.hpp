@@ -39,6 +39,9 @@ public:
     virtual void sighted(Point pixel, const UnitPose& unit) = 0;
     virtual void lost() = 0;  // the target is gone: forget it
     virtual bool has_target() const = 0;
+    // Whether a contour at `pixel` in a frame taken at `unit` can be the target this controller
+    // follows; a controller without a model of the target's motion accepts every one.
+    virtual bool consistent(Point pixel, const UnitPose& unit) const = 0;
 
     // The velocity command for now, with the unit as it is now.
     virtual ptu::PtuCommand command(const UnitPose& unit) const = 0;

@@ -8,6 +8,13 @@ void PredictiveController::sighted(Point pixel, const UnitPose& unit) {
     filter_.update(camera_.world_angles(pixel, unit.pan, unit.tilt), unit.t_s);
 }
 
+bool PredictiveController::consistent(Point pixel, const UnitPose& unit) const {
+    constexpr int kSettled = 10;  // sightings before the filter's prediction is trusted over the image
+    if (!filter_.started() || filter_.updates() < kSettled) return true;
+    const double gate = filter_.settings().gate_sigma;
+    return filter_.distance2(camera_.world_angles(pixel, unit.pan, unit.tilt), unit.t_s) <= gate * gate;
+}
+
 ptu::PtuCommand PredictiveController::command(const UnitPose& unit) const {
     if (!filter_.started()) return ptu::PtuCommand::stop();
     const double ahead = unit.t_s + settings_.lead_s;

@@ -19,6 +19,8 @@ public:
     void sighted(Point pixel, const UnitPose& unit) override;
     void lost() override { filter_.reset(); }
     bool has_target() const override { return filter_.started(); }
+    // Within the filter's gate once it has settled (a few sightings after a start).
+    bool consistent(Point pixel, const UnitPose& unit) const override;
     ptu::PtuCommand command(const UnitPose& unit) const override;
     std::optional<Point> expected_pixel(const UnitPose& unit) const override;
 

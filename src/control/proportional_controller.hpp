@@ -14,6 +14,7 @@ public:
     void sighted(Point pixel, const UnitPose& unit) override;
     void lost() override { has_target_ = false; }
     bool has_target() const override { return has_target_; }
+    bool consistent(Point, const UnitPose&) const override { return true; }
     ptu::PtuCommand command(const UnitPose& unit) const override;
     std::optional<Point> expected_pixel(const UnitPose&) const override { return std::nullopt; }
 

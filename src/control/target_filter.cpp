@@ -12,6 +12,7 @@ constexpr double kStartRateSigma = 1.0;  // rad/s: a new target may already be m
 
 void TargetFilter::start(WorldAngles measured, double t_s) {
     started_ = true;
+    updates_ = 0;
     time_s_ = t_s;
     x_ << measured.azimuth, measured.elevation, 0.0, 0.0;
     const double r2 = settings_.measurement_rad * settings_.measurement_rad;
@@ -20,12 +21,7 @@ void TargetFilter::start(WorldAngles measured, double t_s) {
     p_.diagonal() << r2, r2, v2, v2;
 }
 
-bool TargetFilter::update(WorldAngles measured, double t_s) {
-    if (!started_) {
-        start(measured, t_s);
-        return false;
-    }
-    // Predict: x ← F x, P ← F P Fᵀ + Q, F = [I dt·I; 0 I], Q the discrete white-noise acceleration.
+void TargetFilter::predict(double t_s, Vector4& x, Matrix4& p) const {
     const double dt = std::max(0.0, t_s - time_s_);
     Matrix4 f = Matrix4::Identity();
     f(0, 2) = dt;
@@ -37,8 +33,28 @@ bool TargetFilter::update(WorldAngles measured, double t_s) {
         q(axis, axis + 2) = q(axis + 2, axis) = a2 * dt * dt * dt / 2.0;
         q(axis + 2, axis + 2) = a2 * dt * dt;
     }
-    Vector4 x = f * x_;
-    Matrix4 p = f * p_ * f.transpose() + q;
+    x = f * x_;
+    p = f * p_ * f.transpose() + q;
+}
+
+double TargetFilter::distance2(WorldAngles measured, double t_s) const {
+    Vector4 x;
+    Matrix4 p;
+    predict(t_s, x, p);
+    Eigen::Vector2d innovation(angle_difference(measured.azimuth, x(0)), measured.elevation - x(1));
+    Eigen::Matrix2d s = p.topLeftCorner<2, 2>();
+    s.diagonal().array() += settings_.measurement_rad * settings_.measurement_rad;
+    return innovation.dot(s.inverse() * innovation);
+}
+
+bool TargetFilter::update(WorldAngles measured, double t_s) {
+    if (!started_) {
+        start(measured, t_s);
+        return false;
+    }
+    Vector4 x;
+    Matrix4 p;
+    predict(t_s, x, p);
 
     // Update with the measured angles: H = [I 0].
     Eigen::Vector2d innovation(angle_difference(measured.azimuth, x(0)), measured.elevation - x(1));
@@ -54,6 +70,7 @@ bool TargetFilter::update(WorldAngles measured, double t_s) {
     x_(0) = angle_difference(x_(0), 0.0);
     p_ = p - gain * p.topRows<2>();
     time_s_ = t_s;
+    ++updates_;
     return true;
 }
 

@@ -26,6 +26,7 @@ class TargetFilter {
 public:
     explicit TargetFilter(const TargetFilterSettings& settings = {}) : settings_(settings) {}
     void set_settings(const TargetFilterSettings& settings) { settings_ = settings; }
+    const TargetFilterSettings& settings() const { return settings_; }
 
     // Folds in a sighting made at t_s (seconds on the loop's clock). The first sighting after reset()
     // (or one outside the gate) starts the filter there, at rest with a wide rate uncertainty.
@@ -34,6 +35,9 @@ public:
     void reset() { started_ = false; }
 
     bool started() const { return started_; }
+    int updates() const { return updates_; }  // sightings folded in since the (re)start
+    // Squared Mahalanobis distance of a sighting at t_s from the filter's prediction for then.
+    double distance2(WorldAngles measured, double t_s) const;
     double last_update_s() const { return time_s_; }
     // The state extrapolated to t_s (no update): constant velocity from the last sighting.
     TargetEstimate at(double t_s) const;
@@ -45,9 +49,12 @@ private:
     using Matrix4 = Eigen::Matrix<double, 4, 4>;
 
     void start(WorldAngles measured, double t_s);
+    // x and P predicted to t_s: x ← F x, P ← F P Fᵀ + Q (discrete white-noise acceleration).
+    void predict(double t_s, Vector4& x, Matrix4& p) const;
 
     TargetFilterSettings settings_;
     bool started_ = false;
+    int updates_ = 0;
     double time_s_ = 0;
     Vector4 x_ = Vector4::Zero();
     Matrix4 p_ = Matrix4::Identity();

@@ -33,6 +33,9 @@ public:
     virtual bool set_tunables(const TrackerTunables& tunables) = 0;
 
     virtual void start_at(Point m) = 0;  // a start point from the user replaces detection on the next frame
+    // Like start_at, for the target just lost (a predictor says where it should be now): what the
+    // tracker learned of its looks is kept, so something else at that point is not taken for it.
+    virtual void reacquire_at(Point m) = 0;
     virtual void release() = 0;          // drop the target and detect again
     virtual void reinit() = 0;           // release and restart the detector's threshold adaptation
 

@@ -36,7 +36,15 @@ bool Tracker::set_tunables(const TrackerTunables& tunables) {
     return true;
 }
 
-void Tracker::start_at(Point m) { start_point_ = m; }
+void Tracker::start_at(Point m) {
+    start_point_ = m;
+    reacquire_ = false;
+}
+
+void Tracker::reacquire_at(Point m) {
+    start_point_ = m;
+    reacquire_ = true;
+}
 
 void Tracker::allow_detection(bool allowed) { detection_allowed_ = allowed; }
 
@@ -78,16 +86,16 @@ Point Tracker::best_start(Point centre, double radius, TimePoint deadline) {
     return best;
 }
 
-bool Tracker::begin_track(Point m, double radius, bool search, TimePoint deadline) {
-    model_.reset();
+bool Tracker::begin_track(Point m, double radius, bool search, bool same_target, TimePoint deadline) {
     attention_.reset();
+    if (!same_target) model_.reset();
     velocity_ = {};
     prior_.set_circle(std::max(radius, kStartRadiusPx));
     if (search) m = best_start(m, radius, deadline);
-    model_.seed(smoothed_, m);
+    if (!same_target) model_.seed(smoothed_, m);
     rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
     if (attention_.check(contour_, contour_.centroid, tunables_.attention) != nullptr) return false;
-    model_.reset();
+    if (!same_target) model_.reset();
     model_.learn(contour_, scratch_);
     remember_contour();
     return true;
@@ -149,12 +157,13 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
         if (start_point_) {
-            found = begin_track(*start_point_, kStartRadiusPx, false, deadline);
+            const double last_radius = std::sqrt(std::max(0.0, contour_.area) / std::numbers::pi);
+            found = begin_track(*start_point_, reacquire_ ? last_radius : kStartRadiusPx, false, reacquire_, deadline);
             start_point_.reset();
         } else if (has_previous_ && detection_allowed_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;
-            if (d.found) found = begin_track(d.centre, d.radius_px, true, deadline);
+            if (d.found) found = begin_track(d.centre, d.radius_px, true, false, deadline);
         }
         result_.state = found ? TrackState::Tracking : TrackState::Detecting;
         result_.has_contour = found;

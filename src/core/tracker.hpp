@@ -26,6 +26,7 @@ public:
     const TrackerCapacity& capacity() const { return capacity_; }
 
     void start_at(Point m) override;
+    void reacquire_at(Point m) override;
     void release() override;
     void reinit() override;
     void predict_next(Point m) override { external_prediction_ = m; }
@@ -41,7 +42,8 @@ public:
 
 private:
     Point best_start(Point centre, double radius, TimePoint deadline);
-    bool begin_track(Point m, double radius, bool search, TimePoint deadline);
+    // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks.
+    bool begin_track(Point m, double radius, bool search, bool same_target, TimePoint deadline);
     void track(TimePoint deadline);
     void remember_contour();
 
@@ -63,6 +65,7 @@ private:
     int last_count_ = 0;
     Point velocity_;
     std::optional<Point> start_point_;
+    bool reacquire_ = false;  // start_point_ is a re-acquisition of the last target
     std::optional<Point> external_prediction_;  // from predict_next(), for the next frame only
     bool detection_allowed_ = true;
     int lost_frames_ = 0;

@@ -166,11 +166,15 @@ void FrameLoop::track_frame(TimePoint now) {
     still_at_last_frame_ = still;
     const bool coasting = !telemetry_.has_contour && controller_->has_target();
     if (std::optional<Point> expected = controller_->expected_pixel(at_capture)) {
-        if (coasting) tracker_->start_at(*expected);  // look again where the target should be by now
+        if (coasting) tracker_->reacquire_at(*expected);  // look again where the target should be by now
         else tracker_->predict_next(*expected);
     }
     const FrameResult& result = tracker_->process(frame_.image, deadline);
     const Contour& contour = tracker_->contour();
+    if (result.has_contour && !controller_->consistent(contour.centroid, at_capture)) {
+        tracker_->release();  // the contour ran off the target the controller follows: coast instead
+        ++stats_.rejected_contours;
+    }
     if (result.has_contour) {
         controller_->sighted(contour.centroid, at_capture);
         last_sighting_s_ = at_capture.t_s;

@@ -71,6 +71,7 @@ struct LoopStats {
     long deadline_hits = 0;      // frames whose refinement the deadline cut short
     long late_frames = 0;        // frames whose deadline had passed before tracking began
     long frame_timeouts = 0;     // loop passes without a frame (the loop wakes at least every 50 ms)
+    long rejected_contours = 0;  // contours the controller's prediction ruled out (the tracker restarted)
     long driver_errors = 0;      // failed driver writes or reads
     long telemetry_dropped = 0;  // watch records the socket thread did not take in time
     std::array<long, kHistogramBins> loop_histogram{};

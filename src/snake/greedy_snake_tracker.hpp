@@ -31,6 +31,8 @@ public:
 
     // The next frame starts a snake round m (a circle of initial_radius_factor × 10 px).
     void start_at(Point m) override;
+    // The snake keeps no model of the target's looks: a re-acquisition is a fresh start.
+    void reacquire_at(Point m) override { start_at(m); }
     void release() override;
     void reinit() override;
     void predict_next(Point m) override { external_prediction_ = m; }

@@ -36,7 +36,9 @@ public:
     virtual const char* law() const = 0;
 
     // The target's reference point in a frame captured at `unit.t_s`, with the unit at that pose.
-    virtual void sighted(Point pixel, const UnitPose& unit) = 0;
+    // `confidence` in (0, 1]: how much of the target the contour holds (less while it is partly
+    // hidden, when its centre is biased toward the visible part).
+    virtual void sighted(Point pixel, const UnitPose& unit, double confidence = 1.0) = 0;
     virtual void lost() = 0;  // the target is gone: forget it
     virtual bool has_target() const = 0;
     // Whether a contour at `pixel` in a frame taken at `unit` can be the target this controller

@@ -1,11 +1,12 @@
 #include "control/predictive_controller.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rays::control {
 
-void PredictiveController::sighted(Point pixel, const UnitPose& unit) {
-    filter_.update(camera_.world_angles(pixel, unit.pan, unit.tilt), unit.t_s);
+void PredictiveController::sighted(Point pixel, const UnitPose& unit, double confidence) {
+    filter_.update(camera_.world_angles(pixel, unit.pan, unit.tilt), unit.t_s, 1.0 / std::max(confidence, 1e-3));
 }
 
 bool PredictiveController::consistent(Point pixel, const UnitPose& unit) const {

@@ -16,7 +16,8 @@ public:
         : camera_(camera), settings_(settings), filter_(filter) {}
 
     const char* law() const override { return "predictive"; }
-    void sighted(Point pixel, const UnitPose& unit) override;
+    // A sighting of lower confidence counts with a proportionally larger measurement noise.
+    void sighted(Point pixel, const UnitPose& unit, double confidence = 1.0) override;
     void lost() override { filter_.reset(); }
     bool has_target() const override { return filter_.started(); }
     // Within the filter's gate once it has settled (a few sightings after a start).

@@ -13,7 +13,7 @@ ptu::PtuCommand velocity_command(double pan_rate, double tilt_rate, const Contro
     return command;
 }
 
-void ProportionalController::sighted(Point pixel, const UnitPose& unit) {
+void ProportionalController::sighted(Point pixel, const UnitPose& unit, double) {
     WorldAngles target = camera_.world_angles(pixel, unit.pan, unit.tilt);
     pan_error_ = angle_difference(target.azimuth, unit.pan);
     tilt_error_ = target.elevation - unit.tilt;

@@ -11,7 +11,7 @@ public:
         : camera_(camera), settings_(settings) {}
 
     const char* law() const override { return "proportional"; }
-    void sighted(Point pixel, const UnitPose& unit) override;
+    void sighted(Point pixel, const UnitPose& unit, double confidence = 1.0) override;
     void lost() override { has_target_ = false; }
     bool has_target() const override { return has_target_; }
     bool consistent(Point, const UnitPose&) const override { return true; }

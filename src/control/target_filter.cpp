@@ -47,7 +47,7 @@ double TargetFilter::distance2(WorldAngles measured, double t_s) const {
     return innovation.dot(s.inverse() * innovation);
 }
 
-bool TargetFilter::update(WorldAngles measured, double t_s) {
+bool TargetFilter::update(WorldAngles measured, double t_s, double noise_scale) {
     if (!started_) {
         start(measured, t_s);
         return false;
@@ -59,7 +59,8 @@ bool TargetFilter::update(WorldAngles measured, double t_s) {
     // Update with the measured angles: H = [I 0].
     Eigen::Vector2d innovation(angle_difference(measured.azimuth, x(0)), measured.elevation - x(1));
     Eigen::Matrix2d s = p.topLeftCorner<2, 2>();
-    s.diagonal().array() += settings_.measurement_rad * settings_.measurement_rad;
+    const double r = settings_.measurement_rad * noise_scale;
+    s.diagonal().array() += r * r;
     const Eigen::Matrix2d s_inv = s.inverse();
     if (innovation.dot(s_inv * innovation) > settings_.gate_sigma * settings_.gate_sigma) {
         start(measured, t_s);  // not the target we were following, or it turned on a sixpence

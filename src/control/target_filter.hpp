@@ -31,7 +31,8 @@ public:
     // Folds in a sighting made at t_s (seconds on the loop's clock). The first sighting after reset()
     // (or one outside the gate) starts the filter there, at rest with a wide rate uncertainty.
     // Returns false when the sighting restarted the filter.
-    bool update(WorldAngles measured, double t_s);
+    // `noise_scale` (≥ 1) multiplies the sighting's 1 σ, for a sighting known to be less exact.
+    bool update(WorldAngles measured, double t_s, double noise_scale = 1.0);
     void reset() { started_ = false; }
 
     bool started() const { return started_; }

@@ -37,6 +37,17 @@ void TargetModel::seed(const FloatImage& image, Point m) {
     valid = true;
 }
 
+void TargetModel::follow_exposure(float mean) {
+    constexpr float kDarkest = 1.0f;  // grey: below this the frame says nothing about exposure
+    if (valid && frame_mean > kDarkest && mean > kDarkest) {
+        const float gain = mean / frame_mean;
+        for (float& m : inside_mean) m *= gain;
+        inside_spread *= gain;
+        rim_contrast *= gain;
+    }
+    frame_mean = mean;
+}
+
 void TargetModel::learn(const Contour& contour, std::vector<float>& scratch) {
     std::array<float, kBins> pol{}, mean{}, count{};
     int edges = 0;

@@ -16,6 +16,7 @@ struct TargetModel {
     std::array<float, kBins> inside_mean{};  // grey level inside, looking along that direction
     float inside_spread = 0;                 // typical grey deviation inside
     float rim_contrast = 0;                  // median |dρ/dλ| on the rim, grey/px
+    float frame_mean = 0;                    // the frame's mean grey the grey levels above belong to
 
     static int bin(float phi);
     void reset() { valid = false; }
@@ -24,6 +25,9 @@ struct TargetModel {
     void seed(const FloatImage& image, Point m);
     // Learns from a contour; `scratch` holds max_rays floats (no allocation).
     void learn(const Contour& contour, std::vector<float>& scratch);
+    // The camera's exposure changed the whole frame's mean grey to `mean`: the learned grey levels
+    // and contrasts scale with it, so an exposure step does not make the target look like another.
+    void follow_exposure(float mean);
 };
 
 }  // namespace rays

@@ -11,6 +11,10 @@ constexpr double kStartRadiusPx = 10.0;  // least first guess of the contour siz
 constexpr int kStartCandidates = 6;     // start points tried round a detected region's centre
 constexpr double kVelocityRate = 0.7;     // weight of the newest centroid step in the velocity
 constexpr double kRetryMinSpeedPx = 1.0;  // slower targets are not worth a second prediction
+constexpr double kReacquireGreyTolerance = 0.15;  // of the frame's mean grey: a fresh re-acquisition's inside
+constexpr double kReacquireAreaRatio = 0.3;       // its area within this factor of the lost contour's, either way
+constexpr int kFreshReacquireFrames = 10;         // ... and only this soon after the loss (a target in passing
+                                                  // behind something thin, not one that is gone)
 
 }  // namespace
 
@@ -60,6 +64,7 @@ void Tracker::reinit() {
 }
 
 void Tracker::remember_contour() {
+    tracked_area_ = std::max(0.0, contour_.area);
     last_count_ = contour_.size;
     for (int i = 0; i < last_count_; ++i) last_points_[i] = contour_.points[i].p;
 }
@@ -99,6 +104,29 @@ bool Tracker::begin_track(Point m, double radius, bool search, bool same_target,
     model_.learn(contour_, scratch_);
     remember_contour();
     return true;
+}
+
+bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
+    // What kept the learned looks from finding the target (it is coming out from behind something
+    // and shows only part of itself) may let a fresh start find it; a fresh start finds anything, so
+    // it must look like the target did: about as grey inside, about as big.
+    const TargetModel kept = model_;
+    const double area = tracked_area_;
+    if (!kept.valid) return false;
+    const bool found = begin_track(m, radius, false, false, deadline);
+    auto mean_inside = [](const TargetModel& model) {
+        float sum = 0.0f;
+        for (float v : model.inside_mean) sum += v;
+        return sum / static_cast<float>(TargetModel::kBins);
+    };
+    const double was = mean_inside(kept), now = mean_inside(model_);
+    const bool alike = found && std::abs(now - was) <= kReacquireGreyTolerance * std::max<double>(kept.frame_mean, 1.0) &&
+                       contour_.area >= kReacquireAreaRatio * area && contour_.area * kReacquireAreaRatio <= area;
+    if (!alike) {  // not the target: as if it had not been tried
+        model_ = kept;
+        tracked_area_ = area;
+    }
+    return alike;
 }
 
 void Tracker::track(TimePoint deadline) {
@@ -148,6 +176,9 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
     result_.lost_reason = nullptr;
     result_.detection = {};
     smoother_.smooth(frame, smoothed_);
+    float sum = 0.0f;
+    for (float v : smoothed_.px) sum += v;
+    model_.follow_exposure(sum / static_cast<float>(kFramePixels));
 
     if (result_.state == TrackState::Lost && ++lost_frames_ >= tunables_.attention.lost_frames)
         result_.state = TrackState::Detecting;
@@ -157,8 +188,10 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
         if (start_point_) {
-            const double last_radius = std::sqrt(std::max(0.0, contour_.area) / std::numbers::pi);
+            const double last_radius = std::sqrt(tracked_area_ / std::numbers::pi);
             found = begin_track(*start_point_, reacquire_ ? last_radius : kStartRadiusPx, false, reacquire_, deadline);
+            if (!found && reacquire_ && untracked_frames_ <= kFreshReacquireFrames)
+                found = reacquire_afresh(*start_point_, last_radius, deadline);
             start_point_.reset();
         } else if (has_previous_ && detection_allowed_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
@@ -169,6 +202,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
         result_.has_contour = found;
         result_.predicted = contour_.centroid;
     }
+    untracked_frames_ = result_.has_contour ? 0 : untracked_frames_ + 1;
     external_prediction_.reset();
     previous_ = frame;
     has_previous_ = true;

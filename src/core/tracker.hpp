@@ -44,6 +44,7 @@ private:
     Point best_start(Point centre, double radius, TimePoint deadline);
     // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks.
     bool begin_track(Point m, double radius, bool search, bool same_target, TimePoint deadline);
+    bool reacquire_afresh(Point m, double radius, TimePoint deadline);
     void track(TimePoint deadline);
     void remember_contour();
 
@@ -69,6 +70,8 @@ private:
     std::optional<Point> external_prediction_;  // from predict_next(), for the next frame only
     bool detection_allowed_ = true;
     int lost_frames_ = 0;
+    int untracked_frames_ = 0;  // frames since the last one with a contour
+    double tracked_area_ = 0;   // area of the last contour accepted as the target
     FrameResult result_;
 };
 

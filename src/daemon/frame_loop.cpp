@@ -16,6 +16,9 @@ using Micros = std::chrono::duration<float, std::micro>;
 
 // The loop writes to the unit at least this often, frames or not, so the limiter's braking plan holds.
 constexpr Seconds kLongestWait{0.05};
+constexpr double kArrivalS = 0.1;         // a position command this many seconds of still-rate away has arrived
+constexpr double kWholeTarget = 0.85;     // a contour with this share of the target's running area shows all of it
+constexpr double kTargetAreaRate = 0.05;  // weight of the newest whole contour in the target's running area
 
 ptu::PtuCommand position_command(double pan_rad, double tilt_rad) {
     ptu::PtuCommand command;
@@ -71,6 +74,16 @@ void FrameLoop::set_controllers() {
     lost_policy_.set_settings(tunables_.control.lost);
 }
 
+bool FrameLoop::commands_motion() const {
+    for (std::size_t axis = 0; axis < ptu::kAxes; ++axis) {
+        const ptu::AxisCommand& c = commanded_.axes[axis];
+        const double off = c.mode == ptu::CommandMode::Velocity ? std::abs(c.value)
+                                                                : std::abs(c.value - unit_.axes[axis].position_rad) / kArrivalS;
+        if (off > tunables_.control.still_rad_s) return true;
+    }
+    return false;
+}
+
 double FrameLoop::seconds(TimePoint t) const { return Seconds(t - started_).count(); }
 
 control::UnitPose FrameLoop::unit_pose(TimePoint t) const {
@@ -112,13 +125,14 @@ void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
         mode_ = ControlMode::Automatic;
         return;
     case CommandKind::Release:
-        tracker_->release();
+    case CommandKind::Reinit: {
+        if (command.kind == CommandKind::Release) tracker_->release();
+        else tracker_->reinit();
         controller_->lost();
+        const control::UnitPose pose = unit_pose(now);
+        lost_policy_.lost_at(pose.t_s, pose.pan, pose.tilt);
         return;
-    case CommandKind::Reinit:
-        tracker_->reinit();
-        controller_->lost();
-        return;
+    }
     case CommandKind::Resume: mode_ = ControlMode::Automatic; return;
     case CommandKind::Jog:
         manual_ = {};
@@ -160,8 +174,9 @@ void FrameLoop::track_frame(TimePoint now) {
     last_frame_at_ = now;
     TimePoint begin = clock_.now();
     const control::UnitPose at_capture = unit_pose(frame_.stamp);
+    // The reported rates lag a command by the unit's latency, so a command that moves it counts too.
     const bool still = std::abs(at_capture.pan_rate) <= tunables_.control.still_rad_s &&
-                       std::abs(at_capture.tilt_rate) <= tunables_.control.still_rad_s;
+                       std::abs(at_capture.tilt_rate) <= tunables_.control.still_rad_s && !commands_motion();
     tracker_->allow_detection(still && still_at_last_frame_);  // ego-motion: difference only still views
     still_at_last_frame_ = still;
     const bool coasting = !telemetry_.has_contour && controller_->has_target();
@@ -176,7 +191,13 @@ void FrameLoop::track_frame(TimePoint now) {
         ++stats_.rejected_contours;
     }
     if (result.has_contour) {
-        controller_->sighted(contour.centroid, at_capture);
+        // A contour much smaller than the target has been is a partly hidden target, whose centre
+        // lies off toward the visible part: it counts for less.
+        if (!telemetry_.has_contour) target_area_px_ = contour.area;
+        const double shown = std::clamp(contour.area / std::max(target_area_px_, 1.0), 0.0, 1.0);
+        const double confidence = shown >= kWholeTarget ? 1.0 : std::pow(shown / kWholeTarget, 4.0);
+        if (shown >= kWholeTarget) target_area_px_ += kTargetAreaRate * (contour.area - target_area_px_);
+        controller_->sighted(contour.centroid, at_capture, confidence);
         last_sighting_s_ = at_capture.t_s;
     } else if (controller_->has_target() &&
                (!controller_->expected_pixel(at_capture) ||

@@ -49,6 +49,7 @@ private:
     void track_frame(TimePoint now);
     ptu::PtuCommand next_command(TimePoint now) const;
     double seconds(TimePoint t) const;
+    bool commands_motion() const;  // the last command written moves the unit (or has not arrived)
     control::UnitPose unit_pose(TimePoint t) const;  // the unit's last reported state, extrapolated to t
     void set_controllers();
     void drive_unit(TimePoint now);
@@ -67,6 +68,7 @@ private:
     control::Controller* controller_;  // one of the two, by control.law
     control::LostPolicy lost_policy_;
     double last_sighting_s_ = 0.0;  // capture time of the last frame with a contour
+    double target_area_px_ = 0.0;   // the tracked target's running area while whole in view
     bool still_at_last_frame_ = false;
     bool require_homing_;
     std::chrono::nanoseconds frame_timeout_;  // no frame for this long: the axes stop

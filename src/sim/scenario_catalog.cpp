@@ -88,26 +88,35 @@ Scenario patrol() {
     return s;
 }
 
-// The 30-minute soak: a textured ellipse 7° wide and 9° tall on sums of sines with incommensurate
+// The 30-minute soaks: a textured ellipse 7° wide and 9° tall on sums of sines with incommensurate
 // periods (131, 31, 6.1 s in azimuth; 79, 14.3, 3.7 s in elevation), so the path does not repeat
-// within the soak: azimuth within ±91°, elevation −8…+28°, speed mostly 2–17 deg/s (under 2 for
-// about 4 % of the time, around the turns), changing direction and speed smoothly. Four poles 1.3°
-// wide from the ground up to +40° at azimuths −62, −18, 27 and 71°, and a beam 0.8° high at
-// elevation 8° across azimuths −52…−28°, each hiding at most a quarter of the target as it passes
-// behind; they are far enough apart that two never hide it at once. Noise σ 4; the exposure drifts
-// by ±15 % over 97 s and steps to ×0.75 for the second half of every 240 s.
-Scenario soak() {
+// within the soak: azimuth within ±91°, speed mostly 2–17 deg/s (under 2 around the turns: about 4 %
+// of the time through the buildings, 11 % against the sky, where the elevation swings are smaller),
+// changing direction and speed smoothly. Four poles 1.3° wide from the ground up
+// to +45° at azimuths −62, −18, 27 and 71°, and a beam 0.8° high across azimuths −52…−28°, each hiding
+// at most a quarter of the target as it passes behind; they are far enough apart that two never hide
+// it at once. Noise σ 4; the exposure drifts by ±15 % over 97 s and steps to ×0.75 for the second
+// half of every 240 s.
+//   soak: above the rooftops, against the sky (elevation 24.5…39.5°, the beam at 32°): what stays
+//         hard is the poles, the speed changes, the noise and the exposure.
+//   soak-clutter: through the buildings and the ground (elevation −8…+28°, the beam at 8°), where the
+//         target often passes in front of things of its own grey.
+Scenario soak_at(double elevation, double elevation_scale, double beam_elevation) {
     Scenario s;
-    const auto path = waves_deg(0, 10, {wave_deg(60, 131, 0.3), wave_deg(22, 31, 1.1), wave_deg(9, 6.1, 2.0)},
-                                {wave_deg(10, 79, 0.7), wave_deg(5, 14.3, 2.2), wave_deg(3, 3.7, 0.4)});
+    const double k = elevation_scale;
+    const auto path = waves_deg(0, elevation, {wave_deg(60, 131, 0.3), wave_deg(22, 31, 1.1), wave_deg(9, 6.1, 2.0)},
+                                {wave_deg(10 * k, 79, 0.7), wave_deg(5 * k, 14.3, 2.2), wave_deg(3 * k, 3.7, 0.4)});
     s.targets.push_back({EllipseShape{7, 9}, 65, 30, 1.5, path, {}});
     for (const auto& [azimuth, grey] : {std::pair{-62.0, 45.0}, {-18.0, 150.0}, {27.0, 80.0}, {71.0, 200.0}})
-        s.occluders.push_back(bar_deg(azimuth - 0.65, azimuth + 0.65, -60, 40, grey));
-    s.occluders.push_back(bar_deg(-52, -28, 7.6, 8.4, 60));
+        s.occluders.push_back(bar_deg(azimuth - 0.65, azimuth + 0.65, -60, 45, grey));
+    s.occluders.push_back(bar_deg(-52, -28, beam_elevation - 0.4, beam_elevation + 0.4, 60));
     s.noise_sigma = 4;
     s.exposure = {0.15, 97, 0.75, 240};
     return s;
 }
+
+Scenario soak() { return soak_at(32, 0.4, 32); }
+Scenario soak_clutter() { return soak_at(10, 1.0, 8); }
 
 // Speed ramp: a textured disc 8° across swinging in azimuth as 80°·sin φ(t) — wider than the field of
 // view, so a camera that cannot keep up loses it — the rate of φ rising linearly from 1/16 rad/s at
@@ -145,7 +154,8 @@ struct Entry {
     Scenario (*make)();
 };
 
-constexpr std::array kCatalog{Entry{"patrol", patrol}, Entry{"soak", soak}, Entry{"ramp", ramp}, Entry{"crowd", crowd}};
+constexpr std::array kCatalog{Entry{"patrol", patrol}, Entry{"soak", soak}, Entry{"soak-clutter", soak_clutter},
+                           Entry{"ramp", ramp}, Entry{"crowd", crowd}};
 constexpr auto kNames = [] {
     std::array<std::string_view, kCatalog.size()> names{};
     for (std::size_t i = 0; i < kCatalog.size(); ++i) names[i] = kCatalog[i].name;

@@ -36,6 +36,7 @@ struct SimSettings {                      // [sim]: the simulated camera, fixed 
     int seed = 1;                         // the world's and the noise's seed
     double fps = 25.0;                    // frames per second rendered (paced in real time)
     std::string panorama_png;             // the world as an equirectangular PNG; empty: generated from the seed
+    int latency_frames = 0;               // frames from exposure to delivery, not reflected in the stamp
 };
 
 struct LoopSettings {                 // [loop]

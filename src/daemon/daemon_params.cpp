@@ -3,6 +3,8 @@
 // initialisers in daemon_config.hpp.
 #include "daemon/daemon_params.hpp"
 
+#include "daemon/sim_source.hpp"
+
 #include "config/config_engine.hpp"
 #include "config/config_table.hpp"
 #include "drivers/can/canopen/canopen_settings.hpp"
@@ -51,7 +53,10 @@ void add_sim(ParamTable<DaemonConfig>& table) {
         .add("seed", &SimSettings::seed, "", 0, 1000000, "seed of the simulated world and its noise")
         .add("fps", &SimSettings::fps, "1/s", 1, 200, "frames per second the simulated camera delivers")
         .add("panorama_png", &SimSettings::panorama_png,
-             "the world as an equirectangular PNG (its width spans 360 degrees); empty: generated from the seed");
+             "the world as an equirectangular PNG (its width spans 360 degrees); empty: generated from the seed")
+        .add("latency_frames", &SimSettings::latency_frames, "frames", 0, kMaxSimLatencyFrames,
+             "camera latency: each frame shows the world and the unit as they were this many frame periods "
+             "before it is delivered and stamped (a camera that does not time-stamp its exposures)");
 }
 
 void add_loop(ParamTable<DaemonConfig>& table) {

@@ -64,9 +64,14 @@ FrameSource::Result SimSource::next(CapturedFrame& out, std::chrono::millisecond
     if (due > now) std::this_thread::sleep_until(MonoClock::now() + (due - now));
     double pan = 0.0, tilt = 0.0;
     unit_angles(due, pan, tilt);
+    constexpr auto kPoses = static_cast<long>(kMaxSimLatencyFrames + 1);
+    poses_[static_cast<std::size_t>(delivered_ % kPoses)] = {pan, tilt};
+    // With latency, the picture is the one exposed latency_frames ago, at the pose of that moment.
+    const long shown = std::max(0L, delivered_ - settings_.latency_frames);
+    const Pose& then = poses_[static_cast<std::size_t>(shown % kPoses)];
     const sim::Scenario& scenario = camera_->scenario();
-    camera_->render(Seconds(due - start_).count(), pan + scenario.initial_pan_rad, tilt + scenario.initial_tilt_rad,
-                    *view_);
+    camera_->render(static_cast<double>(shown) / settings_.fps, then.pan + scenario.initial_pan_rad,
+                    then.tilt + scenario.initial_tilt_rad, *view_);
     out.image = view_->image;
     out.index = delivered_++;
     out.stamp = due;

@@ -4,6 +4,7 @@
 // the simulation exactly as through a camera on a rig. Paced in real time at sim.fps; a live source.
 // The rig's pan/tilt zero faces the scenario's start.
 #pragma once
+#include <array>
 #include <atomic>
 #include <memory>
 #include <string>
@@ -15,6 +16,8 @@
 #include "sim/sim_camera.hpp"
 
 namespace rays::daemon {
+
+inline constexpr int kMaxSimLatencyFrames = 15;  // sim.latency_frames at most
 
 // The simulated camera [sim] describes, seeing through the intrinsics [control] gives the
 // controller; null with `error` for an unknown scenario or an unreadable panorama.
@@ -44,6 +47,10 @@ private:
     std::atomic<const LoopChannels*> channels_{nullptr};
     TimePoint start_{};
     long delivered_ = 0;
+    struct Pose {
+        double pan = 0, tilt = 0;
+    };
+    std::array<Pose, kMaxSimLatencyFrames + 1> poses_{};  // the unit's pose at recent frames, by index % size
 };
 
 }  // namespace rays::daemon

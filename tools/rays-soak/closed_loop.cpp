@@ -83,13 +83,19 @@ std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
     auto captured = std::make_unique<daemon::CapturedFrame>();
     std::vector<SoakFrame> frames;
     frames.reserve(static_cast<std::size_t>(run.frames));
+    std::vector<ptu::PtuState> poses;  // the unit at every frame, for the camera's latency
+    poses.reserve(static_cast<std::size_t>(run.frames));
     for (long k = 0; k < run.frames; ++k) {
         const double t = static_cast<double>(k) / config.sim.fps;
         clock.set(origin + std::chrono::duration_cast<TimePoint::duration>(Seconds(t)));
         ptu::PtuState unit;
         calibrated.read(unit, clock.now());
+        poses.push_back(unit);
+        // With camera latency the picture (and its truth) is the one exposed latency_frames ago.
+        const long shown = std::max(0L, k - config.sim.latency_frames);
+        unit = poses[static_cast<std::size_t>(shown)];
         const double pan = unit.axes[0].position_rad, tilt = unit.axes[1].position_rad;
-        sim_camera->render(t, pan + pan0, tilt + tilt0, *view);
+        sim_camera->render(static_cast<double>(shown) / config.sim.fps, pan + pan0, tilt + tilt0, *view);
         captured->image = view->image;
         captured->index = k;
         captured->stamp = clock.now();

@@ -39,8 +39,10 @@ void TargetModel::seed(const FloatImage& image, Point m) {
 
 void TargetModel::follow_exposure(float mean) {
     constexpr float kDarkest = 1.0f;  // grey: below this the frame says nothing about exposure
-    if (valid && frame_mean > kDarkest && mean > kDarkest) {
-        const float gain = mean / frame_mean;
+    constexpr float kStep = 0.05f;    // a change of the frame's mean by more than this in one frame is an
+                                      // exposure step; slower changes (scene, drift) are left to learning
+    const float gain = frame_mean > kDarkest ? mean / frame_mean : 1.0f;
+    if (valid && mean > kDarkest && std::abs(gain - 1.0f) > kStep) {
         for (float& m : inside_mean) m *= gain;
         inside_spread *= gain;
         rim_contrast *= gain;

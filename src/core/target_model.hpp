@@ -25,8 +25,8 @@ struct TargetModel {
     void seed(const FloatImage& image, Point m);
     // Learns from a contour; `scratch` holds max_rays floats (no allocation).
     void learn(const Contour& contour, std::vector<float>& scratch);
-    // The camera's exposure changed the whole frame's mean grey to `mean`: the learned grey levels
-    // and contrasts scale with it, so an exposure step does not make the target look like another.
+    // The whole frame's mean grey is now `mean`: when it jumped from the last frame's (an exposure
+    // step), the learned grey levels and contrasts scale with it, so the target still looks itself.
     void follow_exposure(float mean);
 };
 

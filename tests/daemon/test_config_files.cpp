@@ -42,11 +42,11 @@ TEST_CASE("config/raysd.ini documents every key with unit, range and default, as
     CHECK(config.socket.path == "/run/raysd/raysd.sock");
 }
 
-TEST_CASE("config/demo.ini replays a generated sequence into the mock unit with a socket in the working directory") {
+TEST_CASE("config/demo.ini is the embedded default (simulated camera, mock unit) with a socket in the working directory") {
     DaemonConfig config;
     REQUIRE_FALSE(load_daemon_config(kConfigDir + "demo.ini", config));
-    CHECK(config.camera.source == "replay");
-    CHECK(config.camera.replay_path == "out/demo/demo.y4m");
+    CHECK(config.camera.source == "sim");
+    CHECK(config.sim.scenario == "patrol");
     CHECK(config.ptu.driver == "mock");
     CHECK(config.socket.path.front() != '/');
 }

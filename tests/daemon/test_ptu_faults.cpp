@@ -34,6 +34,9 @@ TEST_CASE("a PTU fault stops the axes, is reported in status and log, and contro
     config.camera.source = "replay";
     config.camera.replay_path = (dir / "seq.y4m").string();
     config.camera.replay_loop = true;
+    // A replayed picture does not turn with the unit: the predictive law's world model would not
+    // hold, so the paper's proportional law steers here.
+    config.control.law = "proportional";
     std::string error;
     auto source = ReplaySource::open(config.camera, clock, error);
     REQUIRE(source);

@@ -165,6 +165,7 @@ json RequestHandler::stats() const {
                  {"deadline_hits", st.deadline_hits},
                  {"late_frames", st.late_frames},
                  {"frame_timeouts", st.frame_timeouts},
+                 {"rejected_contours", st.rejected_contours},
                  {"driver_errors", st.driver_errors},
                  {"telemetry_dropped", st.telemetry_dropped},
                  {"loop_us", time_summary(st.recent_loop_us, st.frames)},

@@ -51,7 +51,7 @@ void print_status(const json& s) {
 
 void print_stats(const json& s) {
     for (const char* key : {"frames", "deadline_hits", "late_frames", "dropped_frames", "frame_timeouts",
-                            "driver_errors", "telemetry_dropped", "log_dropped"})
+                            "rejected_contours", "driver_errors", "telemetry_dropped", "log_dropped"})
         std::printf("%-18s %s\n", key, field(s, key).c_str());
     for (const char* key : {"loop_us", "track_us", "latency_us"})
         std::printf("%-18s median %s  p99 %s  max %s\n", key, field(s[key], "median").c_str(),

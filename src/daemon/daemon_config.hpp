@@ -32,7 +32,7 @@ struct CameraSettings {                   // [camera]: fixed at start
 };
 
 struct SimSettings {                      // [sim]: the simulated camera, fixed at start
-    std::string scenario = "patrol";      // patrol | soak | soak-clutter | ramp | crowd
+    std::string scenario = "soak";        // soak | soak-clutter | patrol | ramp | crowd
     int seed = 1;                         // the world's and the noise's seed
     double fps = 25.0;                    // frames per second rendered (paced in real time)
     std::string panorama_png;             // the world as an equirectangular PNG; empty: generated from the seed

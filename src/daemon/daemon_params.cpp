@@ -46,9 +46,9 @@ void add_camera(ParamTable<DaemonConfig>& table) {
 
 void add_sim(ParamTable<DaemonConfig>& table) {
     table.section("sim", ParamKind::Capacity, &DaemonConfig::sim)
-        .add_choice("scenario", &SimSettings::scenario, "patrol|soak|soak-clutter|ramp|crowd",
-                    "what the simulated camera sees: a walker on patrol, the 30-minute soak path against the sky "
-                    "or through buildings, a target speeding up, several targets")
+        .add_choice("scenario", &SimSettings::scenario, "soak|soak-clutter|patrol|ramp|crowd",
+                    "what the simulated camera sees: the 30-minute soak path against the sky or through "
+                    "buildings, a walker on patrol, a target speeding up, several targets")
         .add("seed", &SimSettings::seed, "", 0, 1000000, "seed of the simulated world and its noise")
         .add("fps", &SimSettings::fps, "1/s", 1, 200, "frames per second the simulated camera delivers")
         .add("panorama_png", &SimSettings::panorama_png,

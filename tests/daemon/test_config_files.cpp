@@ -46,7 +46,7 @@ TEST_CASE("config/demo.ini is the embedded default (simulated camera, mock unit)
     DaemonConfig config;
     REQUIRE_FALSE(load_daemon_config(kConfigDir + "demo.ini", config));
     CHECK(config.camera.source == "sim");
-    CHECK(config.sim.scenario == "patrol");
+    CHECK(config.sim.scenario == "soak");
     CHECK(config.ptu.driver == "mock");
     CHECK(config.socket.path.front() != '/');
 }

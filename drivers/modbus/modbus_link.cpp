@@ -8,6 +8,10 @@
 namespace rays::ptu {
 namespace {
 
+// The unit did not answer in time: libmodbus says ETIMEDOUT, and on a loaded machine sometimes EAGAIN
+// (seen in CI with slow replies over TCP); both mean no reply.
+bool no_reply(int code) { return code == ETIMEDOUT || code == EAGAIN; }
+
 struct Transfer {
     int address;
     int count;
@@ -90,7 +94,7 @@ bool ModbusLink::attempt(int slave, std::string& error, const char* what, int ad
                       code - MODBUS_ENOBASE, modbus_strerror(code));
     else
         std::snprintf(text, sizeof text, "modbus: slave %d %s 0x%04X: %s after %d tries", slave, what, address,
-                      code == ETIMEDOUT ? "no reply" : modbus_strerror(code), settings_.retries + 1);
+                      no_reply(code) ? "no reply" : modbus_strerror(code), settings_.retries + 1);
     error = text;
     return false;
 }

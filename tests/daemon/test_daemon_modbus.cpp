@@ -1,10 +1,12 @@
 // The real raysd binary with driver = modbus, configured only through its INI file, tracking a
 // replayed sequence and moving the simulated unit tools/ptu-sim over loopback TCP and over a pty
-// pair (RTU); checked on the register writes ptu-sim received.
+// pair (RTU); checked on the register writes ptu-sim received. And the closed loop through Modbus:
+// the simulated camera rendering at the angles ptu-sim reports.
 #include <catch2/catch.hpp>
 
 #include <signal.h>
 
+#include <cmath>
 #include <fstream>
 #include <thread>
 
@@ -84,4 +86,42 @@ TEST_CASE("raysd with driver = modbus over TCP tracks and moves ptu-sim, and sto
 TEST_CASE("raysd with driver = modbus RTU over a pty pair tracks and moves ptu-sim", "[modbus]") {
     if (std::system("command -v socat > /dev/null") != 0) skip("socat is not installed (Debian package socat)");
     track_and_move("rtu");
+}
+
+TEST_CASE("raysd closes the loop through Modbus: the simulated camera follows the angles ptu-sim reports", "[modbus]") {
+    std::filesystem::path dir = fresh_dir("modbus-sim-camera");
+    const int port = free_tcp_port();
+    const std::string modbus = "[modbus]\ntransport = tcp\nport = " + std::to_string(port) +
+                               "\ntimeout_ms = 200\nretries = 2\n" + custom_map_ini(1000);
+    std::ofstream(dir / "sim.ini") << modbus;
+    std::ofstream(dir / "raysd.ini") << "[camera]\nsource = sim\n\n[sim]\nscenario = soak\n\n[socket]\npath = "
+                                     << (dir / "raysd.sock").string() << "\n\n[ptu]\ndriver = modbus\n\n" << modbus;
+    SimProcess sim({RAYS_PTU_SIM, "--config", (dir / "sim.ini").string(), "--tcp", std::to_string(port)});
+    REQUIRE(sim.ready());
+    DaemonProcess daemon({raysd_binary().string(), "--config", (dir / "raysd.ini").string()}, {}, dir / "raysd.log");
+    INFO(daemon.log());
+    REQUIRE(wait_for_socket(dir / "raysd.sock", 10s));
+    LineConnection c(dir / "raysd.sock");
+    c.read_json();
+    // The soak target moves at several deg/s: tracked and kept near the centre, the unit must turn.
+    double pan_low = 1e9, pan_high = -1e9;
+    int tracking = 0, centred = 0, polls = 0;
+    for (; polls < 60; ++polls) {  // 6 s
+        std::this_thread::sleep_for(100ms);
+        json status = c.request({{"cmd", "status"}});
+        const double pan = status["ptu"]["pan_deg"].get<double>();
+        pan_low = std::min(pan_low, pan);
+        pan_high = std::max(pan_high, pan);
+        if (status["state"] != "tracking") continue;
+        ++tracking;
+        const double x = status["ref"][0].get<double>(), y = status["ref"][1].get<double>();
+        if (std::hypot(x - 63.5, y - 63.5) < 12.8) ++centred;
+    }
+    INFO("tracking in " << tracking << " of " << polls << " polls, centred in " << centred << "; pan "
+                        << pan_low << ".." << pan_high << " deg");
+    CHECK(tracking > polls / 2);
+    CHECK(centred >= tracking * 9 / 10);
+    CHECK(pan_high - pan_low > 5.0);  // the unit behind Modbus turned to follow
+    daemon.signal(SIGTERM);
+    CHECK(daemon.wait(5s) == 0);
 }

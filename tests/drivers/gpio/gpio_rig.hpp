@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <initializer_list>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -45,9 +46,13 @@ inline gpio::GpioSettings rig_settings() {
 inline double seconds_between(TimePoint a, TimePoint b) { return std::chrono::duration<double>(b - a).count(); }
 
 struct StepperRig {
-    explicit StepperRig(const gpio::GpioSettings& settings = rig_settings(), bool activate = true) {
+    // `switches` are wired before the driver starts reading its inputs (a switch added later could be
+    // read as pressed in between).
+    explicit StepperRig(const gpio::GpioSettings& settings = rig_settings(), bool activate = true,
+                        std::initializer_list<gpio::SimulatedSwitch> switches = {}) {
         lines.add_motor(kPanStep, kPanDir);
         lines.add_motor(kTiltStep, kTiltDir);
+        for (const gpio::SimulatedSwitch& simulated : switches) lines.add_switch(simulated);
         std::string error;
         driver = gpio::make_gpio_stepper_driver(settings, clock, lines, error);
         REQUIRE(driver != nullptr);

@@ -108,9 +108,8 @@ TEST_CASE("gpio-stepper: homing seeks the switch, backs off and sets the offset"
     s.tilt_home_offset_deg = 45.0;
     s.require_homing = true;
     s.limit_active_low = false;
-    StepperRig rig(s);
-    rig.lines.add_switch({kPanMin, kPanStep, kPanDir, -300, true, true});
-    rig.lines.add_switch({kTiltMax, kTiltStep, kTiltDir, 200, false, true});
+    StepperRig rig(s, true,
+                   {{kPanMin, kPanStep, kPanDir, -300, true, true}, {kTiltMax, kTiltStep, kTiltDir, 200, false, true}});
     // require_homing: no motion before homing.
     CHECK_FALSE(rig.drive(command(CommandMode::Velocity, deg(10.0), deg(10.0)), 0.1));
     CHECK(rig.lines.edges_of(kPanStep).empty());
@@ -138,9 +137,7 @@ TEST_CASE("gpio-stepper: homing seeks the switch, backs off and sets the offset"
 TEST_CASE("gpio-stepper: a limit switch faults its axis and stops the other", "[gpio]") {
     gpio::GpioSettings s = rig_settings();
     s.pan_limit_max_line = kPanMax;
-    StepperRig rig(s, false);
-    rig.lines.add_switch({kPanMax, kPanStep, kPanDir, 500, false, false});  // active low
-    REQUIRE(rig.driver->activate().ok);
+    StepperRig rig(s, true, {{kPanMax, kPanStep, kPanDir, 500, false, false}});  // active low
     rig.drive(command(CommandMode::Velocity, deg(20.0), deg(20.0)), 1.0);
     ptu::PtuState state;
     const ptu::DriverStatus status = rig.read(state);

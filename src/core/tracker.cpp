@@ -13,6 +13,7 @@ constexpr double kVelocityRate = 0.7;     // weight of the newest centroid step 
 constexpr double kRetryMinSpeedPx = 1.0;  // slower targets are not worth a second prediction
 constexpr double kReacquireGreyTolerance = 0.15;  // of the frame's mean grey: a fresh re-acquisition's inside
 constexpr double kReacquireAreaRatio = 0.3;       // its area within this factor of the lost contour's, either way
+constexpr double kReacquireSideShift = 0.6;       // of the target's radius: the points beside a hidden middle
 constexpr int kFreshReacquireFrames = 10;         // ... and only this soon after the loss (a target in passing
                                                   // behind something thin, not one that is gone)
 
@@ -192,6 +193,14 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
             found = begin_track(*start_point_, reacquire_ ? last_radius : kStartRadiusPx, false, reacquire_, deadline);
             if (!found && reacquire_ && untracked_frames_ <= kFreshReacquireFrames)
                 found = reacquire_afresh(*start_point_, last_radius, deadline);
+            // Something thin in front of the target's middle (a pole) hides the point itself: look
+            // to either side of it, and above and below.
+            for (int side = 0; !found && reacquire_ && side < 4; ++side) {
+                const double d = kReacquireSideShift * last_radius;
+                const Point offsets[] = {{-d, 0.0}, {d, 0.0}, {0.0, -d}, {0.0, d}};
+                const Point m{start_point_->x + offsets[side].x, start_point_->y + offsets[side].y};
+                found = begin_track(m, last_radius, false, true, deadline);
+            }
             start_point_.reset();
         } else if (has_previous_ && detection_allowed_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);

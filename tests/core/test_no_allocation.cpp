@@ -3,9 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include "core/tracker.hpp"
-#include "scenes/scene.hpp"
 #include "support/skip.hpp"
 #include "support/thread_allocation_counter.hpp"
+#include "support/tracker_allocation_run.hpp"
 
 #include <memory>
 
@@ -73,33 +73,10 @@ TEST_CASE("Tracker::process and set_tunables allocate nothing while tracking a s
     const rays::TrackerTunables changed = changed_tunables(config.tunables, config.capacity);
     REQUIRE(changed.rays.count >= config.tunables.rays.centroid_rays);
 
-    auto scene = rays::scenes::make_scene("clutter");
-    REQUIRE(scene != nullptr);
-    REQUIRE(scene->frame_count() >= kFrames);
-    std::vector<rays::GreyImage> frames(kFrames);
-    {
-        const auto rendered = std::make_unique<rays::scenes::SceneFrame>();
-        for (int i = 0; i < kFrames; ++i) {
-            scene->render(i, *rendered);
-            frames[static_cast<std::size_t>(i)] = rendered->image;
-        }
-    }
-
-    const rays::TimePoint deadline = clock.now() + std::chrono::hours(1);
-    int tracking = 0;
-    bool tunables_applied = false;
-    long allocations = 0;
-    {
-        CountingScope counting;
-        for (int i = 0; i < kFrames; ++i) {
-            if (i == kFrames / 2) tunables_applied = tracker.set_tunables(changed);
-            if (tracker.process(frames[static_cast<std::size_t>(i)], deadline).state == rays::TrackState::Tracking) ++tracking;
-        }
-        allocations = counted_allocations();
-    }
-    CHECK(tunables_applied);
+    const rays::test::TrackerAllocationRun run = rays::test::count_tracker_allocations(tracker, "clutter", kFrames, changed);
+    CHECK(run.tunables_applied);
     CHECK(tracker.tunables().rays.count == changed.rays.count);
-    CHECK(allocations == 0);
-    CHECK(tracking >= 100);
+    CHECK(run.allocations == 0);
+    CHECK(run.tracking >= 100);
 #endif
 }

@@ -1,0 +1,20 @@
+// The no-allocation run both contour trackers are held to: a generated scene's frames are rendered
+// first, then the tracker processes them with allocation counting on (thread_allocation_counter.hpp)
+// and gets `changed` tunables half-way through.
+#pragma once
+#include <string_view>
+
+#include "core/contour_tracker.hpp"
+
+namespace rays::test {
+
+struct TrackerAllocationRun {
+    int tracking = 0;               // frames that ended in the tracking state
+    bool tunables_applied = false;  // set_tunables(changed) accepted them
+    long allocations = 0;           // on this thread while processing
+};
+
+TrackerAllocationRun count_tracker_allocations(ContourTracker& tracker, std::string_view scene, int frames,
+                                               const TrackerTunables& changed);
+
+}  // namespace rays::test

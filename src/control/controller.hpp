@@ -20,6 +20,11 @@ struct UnitPose {
     UnitPose at(double t) const {  // extrapolated at constant rate
         return {t, pan + pan_rate * (t - t_s), tilt + tilt_rate * (t - t_s), pan_rate, tilt_rate};
     }
+    // The state a unit reported, taken at t_s.
+    static UnitPose of(const ptu::PtuState& state, double t_s) {
+        return {t_s, state.axes[0].position_rad, state.axes[1].position_rad, state.axes[0].velocity_rad_s,
+                state.axes[1].velocity_rad_s};
+    }
 };
 
 struct ControllerSettings {

@@ -42,10 +42,6 @@ struct LoopStart {
     RealtimeReport affinity;
 };
 
-std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const PtuSettings& ptu) {
-    return {{{ptu.pan_inverted, ptu.pan_zero_deg * kRadPerDeg}, {ptu.tilt_inverted, ptu.tilt_zero_deg * kRadPerDeg}}};
-}
-
 // mock.record_path: every command the simulated unit received, for tests and diagnosis.
 void write_mock_records(const ptu::PtuDriver& driver, const std::string& path, TimePoint origin) {
     const auto* mock = dynamic_cast<const ptu::MockPtu*>(&driver);
@@ -66,6 +62,10 @@ void write_mock_records(const ptu::PtuDriver& driver, const std::string& path, T
 }
 
 }  // namespace
+
+std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const PtuSettings& ptu) {
+    return {{{ptu.pan_inverted, ptu.pan_zero_deg * kRadPerDeg}, {ptu.tilt_inverted, ptu.tilt_zero_deg * kRadPerDeg}}};
+}
 
 void block_daemon_signals() {
     sigset_t set = daemon_signals();

@@ -9,9 +9,13 @@
 #include "daemon/daemon_config.hpp"
 #include "daemon/frame_loop.hpp"
 #include "daemon/frame_source.hpp"
+#include "drivers/calibrated_ptu.hpp"
 #include "drivers/ptu_driver.hpp"
 
 namespace rays::daemon {
+
+// The unit's per-axis inversion and zero offset as [ptu] gives them.
+std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const PtuSettings& ptu);
 
 struct DaemonParts {
     std::unique_ptr<FrameSource> source;  // null: from [camera]

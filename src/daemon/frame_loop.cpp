@@ -87,9 +87,7 @@ bool FrameLoop::commands_motion() const {
 double FrameLoop::seconds(TimePoint t) const { return Seconds(t - started_).count(); }
 
 control::UnitPose FrameLoop::unit_pose(TimePoint t) const {
-    control::UnitPose reported{seconds(unit_.stamp), unit_.axes[0].position_rad, unit_.axes[1].position_rad,
-                               unit_.axes[0].velocity_rad_s, unit_.axes[1].velocity_rad_s};
-    return reported.at(seconds(t));
+    return control::UnitPose::of(unit_, seconds(unit_.stamp)).at(seconds(t));
 }
 
 void FrameLoop::run() {

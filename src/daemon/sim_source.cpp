@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "control/controller.hpp"
 #include "daemon/control_tunables.hpp"
 
 namespace rays::daemon {
@@ -47,8 +48,9 @@ void SimSource::unit_angles(TimePoint at, double& pan, double& tilt) const {
     channels->status.read([&](const LoopStatus& status) {
         const ptu::PtuState& unit = status.ptu;
         const double ahead = unit.stamp == TimePoint{} ? 0.0 : Seconds(at - unit.stamp).count();
-        pan = unit.axes[0].position_rad + unit.axes[0].velocity_rad_s * ahead;
-        tilt = unit.axes[1].position_rad + unit.axes[1].velocity_rad_s * ahead;
+        const control::UnitPose then = control::UnitPose::of(unit, 0.0).at(ahead);
+        pan = then.pan;
+        tilt = then.tilt;
     });
 }
 

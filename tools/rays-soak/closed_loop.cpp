@@ -6,6 +6,7 @@
 
 #include "common/angles.hpp"
 #include "control/camera_model.hpp"
+#include "daemon/daemon.hpp"
 #include "daemon/frame_loop.hpp"
 #include "daemon/loop_channels.hpp"
 #include "daemon/ptu_factory.hpp"
@@ -46,10 +47,6 @@ void write_overlay(const std::string& dir, long index, const daemon::LoopChannel
     });
 }
 
-std::array<ptu::AxisCalibration, ptu::kAxes> calibration_of(const daemon::PtuSettings& p) {
-    return {{{p.pan_inverted, p.pan_zero_deg * kRadPerDeg}, {p.tilt_inverted, p.tilt_zero_deg * kRadPerDeg}}};
-}
-
 }  // namespace
 
 std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
@@ -62,7 +59,7 @@ std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
     if (!driver) return {};
     daemon::ServiceNotifier notifier;
     daemon::LoopChannels channels(config.camera.queue_frames);
-    ptu::CalibratedPtu calibrated(*driver, calibration_of(config.ptu));
+    ptu::CalibratedPtu calibrated(*driver, daemon::calibration_of(config.ptu));
     ptu::PtuLimiter limiter(calibrated);
     LastFrame observer;
     auto loop = std::make_unique<daemon::FrameLoop>(config, channels, limiter, notifier, clock, &observer);

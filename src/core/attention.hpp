@@ -23,7 +23,8 @@ public:
 
 private:
     bool has_previous_ = false;
-    double area_ = 0;  // running area, so one noisy frame does not set the reference
+    double area_ = 0;        // running area, so one noisy frame does not set the reference
+    double whole_area_ = 0;  // the target's area while nothing hid it: a hidden part showing again is no jump
     ContourFeatures current_;
 };
 

@@ -6,7 +6,8 @@
 namespace rays::control {
 namespace {
 
-constexpr double kStartRateSigma = 1.0;  // rad/s: a new target may already be moving fast
+constexpr double kStartRateSigma = 1.0;   // rad/s: a new target may already be moving fast
+constexpr double kStartAccelSigma = 3.0;  // rad/s²: ... and turning
 
 }  // namespace
 
@@ -14,32 +15,47 @@ void TargetFilter::start(WorldAngles measured, double t_s) {
     started_ = true;
     updates_ = 0;
     time_s_ = t_s;
-    x_ << measured.azimuth, measured.elevation, 0.0, 0.0;
+    x_ << measured.azimuth, measured.elevation, 0.0, 0.0, 0.0, 0.0;
     const double r2 = settings_.measurement_rad * settings_.measurement_rad;
     const double v2 = kStartRateSigma * kStartRateSigma;
-    p_ = Matrix4::Zero();
-    p_.diagonal() << r2, r2, v2, v2;
+    const double a2 = settings_.motion == TargetMotion::ConstantAcceleration ? kStartAccelSigma * kStartAccelSigma : 0.0;
+    p_ = Matrix::Zero();
+    p_.diagonal() << r2, r2, v2, v2, a2, a2;
 }
 
-void TargetFilter::predict(double t_s, Vector4& x, Matrix4& p) const {
+void TargetFilter::predict(double t_s, Vector& x, Matrix& p) const {
     const double dt = std::max(0.0, t_s - time_s_);
-    Matrix4 f = Matrix4::Identity();
-    f(0, 2) = dt;
-    f(1, 3) = dt;
-    const double a2 = settings_.accel_rad_s2 * settings_.accel_rad_s2;
-    Matrix4 q = Matrix4::Zero();
-    for (int axis = 0; axis < 2; ++axis) {
-        q(axis, axis) = a2 * dt * dt * dt * dt / 4.0;
-        q(axis, axis + 2) = q(axis + 2, axis) = a2 * dt * dt * dt / 2.0;
-        q(axis + 2, axis + 2) = a2 * dt * dt;
+    const bool accelerating = settings_.motion == TargetMotion::ConstantAcceleration;
+    Matrix f = Matrix::Identity();
+    Matrix q = Matrix::Zero();
+    const double d2 = dt * dt, d3 = d2 * dt, d4 = d3 * dt;
+    for (int angle = 0; angle < 2; ++angle) {
+        const int rate = angle + 2, accel = angle + 4;
+        f(angle, rate) = dt;
+        if (accelerating) {
+            f(angle, accel) = d2 / 2.0;
+            f(rate, accel) = dt;
+            // Discrete white-noise jerk: Γ = [dt³/6, dt²/2, dt]ᵀ, Q = Γ Γᵀ σ_j².
+            const double j2 = settings_.jerk_rad_s3 * settings_.jerk_rad_s3;
+            const double g[3] = {d3 / 6.0, d2 / 2.0, dt};
+            const int index[3] = {angle, rate, accel};
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) q(index[r], index[c]) = j2 * g[r] * g[c];
+        } else {
+            // Discrete white-noise acceleration: Γ = [dt²/2, dt]ᵀ; the acceleration states stay 0.
+            const double a2 = settings_.accel_rad_s2 * settings_.accel_rad_s2;
+            q(angle, angle) = a2 * d4 / 4.0;
+            q(angle, rate) = q(rate, angle) = a2 * d3 / 2.0;
+            q(rate, rate) = a2 * d2;
+        }
     }
     x = f * x_;
     p = f * p_ * f.transpose() + q;
 }
 
 double TargetFilter::distance2(WorldAngles measured, double t_s) const {
-    Vector4 x;
-    Matrix4 p;
+    Vector x;
+    Matrix p;
     predict(t_s, x, p);
     Eigen::Vector2d innovation(angle_difference(measured.azimuth, x(0)), measured.elevation - x(1));
     Eigen::Matrix2d s = p.topLeftCorner<2, 2>();
@@ -52,8 +68,8 @@ bool TargetFilter::update(WorldAngles measured, double t_s, double noise_scale) 
         start(measured, t_s);
         return false;
     }
-    Vector4 x;
-    Matrix4 p;
+    Vector x;
+    Matrix p;
     predict(t_s, x, p);
 
     // Update with the measured angles: H = [I 0].
@@ -66,7 +82,7 @@ bool TargetFilter::update(WorldAngles measured, double t_s, double noise_scale) 
         start(measured, t_s);  // not the target we were following, or it turned on a sixpence
         return false;
     }
-    const Eigen::Matrix<double, 4, 2> gain = p.leftCols<2>() * s_inv;
+    const Eigen::Matrix<double, 6, 2> gain = p.leftCols<2>() * s_inv;
     x_ = x + gain * innovation;
     x_(0) = angle_difference(x_(0), 0.0);
     p_ = p - gain * p.topRows<2>();
@@ -76,8 +92,9 @@ bool TargetFilter::update(WorldAngles measured, double t_s, double noise_scale) 
 }
 
 TargetEstimate TargetFilter::at(double t_s) const {
-    const double dt = t_s - time_s_;
-    return {{angle_difference(x_(0) + x_(2) * dt, 0.0), x_(1) + x_(3) * dt}, x_(2), x_(3)};
+    const double dt = t_s - time_s_, h = dt * dt / 2.0;
+    return {{angle_difference(x_(0) + x_(2) * dt + x_(4) * h, 0.0), x_(1) + x_(3) * dt + x_(5) * h},
+            x_(2) + x_(4) * dt, x_(3) + x_(5) * dt};
 }
 
 double TargetFilter::angle_sigma(int axis) const { return std::sqrt(p_(axis, axis)); }

@@ -1,5 +1,8 @@
 // A Kalman filter on the target's direction in world angles: per axis (azimuth, elevation) the state
-// is angle and angular rate under a constant-velocity model with white-noise acceleration; each
+// is angle and angular rate under a constant-velocity model with white-noise acceleration, or angle,
+// rate and angular acceleration under a constant-acceleration model with white-noise jerk (for targets
+// that swing and turn hard, seen through a camera with latency, where extrapolating the rate alone
+// overshoots every turn); each
 // sighting measures the angles (the contour's centre through the camera model at the unit's pose
 // at capture time), so the rig's own motion is already removed. Azimuth innovations are wrapped.
 // Fixed-size Eigen matrices: no allocation.
@@ -10,8 +13,12 @@
 
 namespace rays::control {
 
+enum class TargetMotion { ConstantVelocity, ConstantAcceleration };
+
 struct TargetFilterSettings {
-    double accel_rad_s2 = 1.0;          // how hard targets accelerate (process noise, 1 σ)
+    TargetMotion motion = TargetMotion::ConstantVelocity;
+    double accel_rad_s2 = 1.0;          // constant velocity: how hard targets accelerate (process noise, 1 σ)
+    double jerk_rad_s3 = 30.0;          // constant acceleration: how fast their acceleration changes (1 σ)
     double measurement_rad = 0.004;     // 1 σ of a sighting's angles
     double gate_sigma = 6.0;            // a sighting further than this from the prediction restarts the filter
 };
@@ -40,25 +47,26 @@ public:
     // Squared Mahalanobis distance of a sighting at t_s from the filter's prediction for then.
     double distance2(WorldAngles measured, double t_s) const;
     double last_update_s() const { return time_s_; }
-    // The state extrapolated to t_s (no update): constant velocity from the last sighting.
+    // The state extrapolated to t_s (no update), by the motion model, from the last sighting.
     TargetEstimate at(double t_s) const;
     // 1 σ of the angle estimate per axis, as the filter sees it now.
     double angle_sigma(int axis) const;
 
 private:
-    using Vector4 = Eigen::Matrix<double, 4, 1>;  // azimuth, elevation, their rates
-    using Matrix4 = Eigen::Matrix<double, 4, 4>;
+    // azimuth, elevation, their rates, their accelerations (held at 0 under constant velocity)
+    using Vector = Eigen::Matrix<double, 6, 1>;
+    using Matrix = Eigen::Matrix<double, 6, 6>;
 
     void start(WorldAngles measured, double t_s);
-    // x and P predicted to t_s: x ← F x, P ← F P Fᵀ + Q (discrete white-noise acceleration).
-    void predict(double t_s, Vector4& x, Matrix4& p) const;
+    // x and P predicted to t_s: x ← F x, P ← F P Fᵀ + Q (discrete white-noise acceleration or jerk).
+    void predict(double t_s, Vector& x, Matrix& p) const;
 
     TargetFilterSettings settings_;
     bool started_ = false;
     int updates_ = 0;
     double time_s_ = 0;
-    Vector4 x_ = Vector4::Zero();
-    Matrix4 p_ = Matrix4::Identity();
+    Vector x_ = Vector::Zero();
+    Matrix p_ = Matrix::Identity();
 };
 
 }  // namespace rays::control

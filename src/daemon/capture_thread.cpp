@@ -10,8 +10,8 @@ constexpr long kStatusEvery = 25;  // frames between status refreshes
 
 }  // namespace
 
-CaptureThread::CaptureThread(FrameSource& source, LoopChannels& channels)
-    : source_(source), channels_(channels), status_(source.describe()) {}
+CaptureThread::CaptureThread(FrameSource& source, LoopChannels& channels, const Clock& clock)
+    : source_(source), channels_(channels), clock_(clock), status_(source.describe()) {}
 
 CaptureThread::~CaptureThread() { stop(std::chrono::milliseconds(1000)); }
 
@@ -55,6 +55,7 @@ void CaptureThread::run() {
     while (!stop_.load() && !ended) {
         switch (source_.next(frame, kPollInterval)) {
         case FrameSource::Result::Frame:
+            frame.arrived = clock_.now();
             if (!channels_.camera_connected.exchange(true)) set_status(source_.describe());
             if (!queue(frame)) ended = true;
             if (delivered_.fetch_add(1) % kStatusEvery == 0) set_status(source_.describe());

@@ -13,7 +13,7 @@ namespace rays::daemon {
 
 class CaptureThread {
 public:
-    CaptureThread(FrameSource& source, LoopChannels& channels);
+    CaptureThread(FrameSource& source, LoopChannels& channels, const Clock& clock);
     ~CaptureThread();
 
     void start();
@@ -30,6 +30,7 @@ private:
 
     FrameSource& source_;
     LoopChannels& channels_;
+    const Clock& clock_;
     std::thread thread_;
     std::atomic<bool> stop_{false};
     std::atomic<bool> finished_{false};

@@ -16,7 +16,10 @@ ControlTunables control_tunables(const ControlSettings& c, const PtuMotion& moti
     t.controller.max_velocity_rad_s = motion.max_velocity_deg_s * kRadPerDeg;
     t.controller.lead_s = c.lead_ms / 1000.0;
     t.controller.still_rate_rad_s = c.still_deg_s * kRadPerDeg;
+    t.filter.motion = c.target_motion == "acceleration" ? control::TargetMotion::ConstantAcceleration
+                                                         : control::TargetMotion::ConstantVelocity;
     t.filter.accel_rad_s2 = c.target_accel_deg_s2 * kRadPerDeg;
+    t.filter.jerk_rad_s3 = c.target_jerk_deg_s3 * kRadPerDeg;
     t.filter.measurement_rad = c.sighting_noise_px / t.intrinsics.fx;
     t.lost.action = c.lost_action == "search" ? control::LostAction::Search
                     : c.lost_action == "home" ? control::LostAction::Home

@@ -87,7 +87,7 @@ struct Daemon::Running {
           calibrated(driver, calibration_of(config.ptu)),
           limiter(calibrated),
           loop(config, channels, limiter, notifier, clock, observer),
-          capture(source, channels) {}
+          capture(source, channels, clock) {}
 
     ServiceNotifier notifier;
     LoopChannels channels;

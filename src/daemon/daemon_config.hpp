@@ -36,11 +36,12 @@ struct SimSettings {                      // [sim]: the simulated camera, fixed 
     int seed = 1;                         // the world's and the noise's seed
     double fps = 25.0;                    // frames per second rendered (paced in real time)
     std::string panorama_png;             // the world as an equirectangular PNG; empty: generated from the seed
-    int latency_frames = 0;               // frames from exposure to delivery, not reflected in the stamp
+    int latency_frames = 0;               // frames from exposure to delivery
+    bool stamp_exposure = true;           // stamped at exposure (as V4L2 does), else at delivery
 };
 
 struct LoopSettings {                 // [loop]
-    double budget_ms = 20.0;          // tunable: tracking deadline after the frame's capture time
+    double budget_ms = 20.0;          // tunable: tracking deadline after the frame reached raysd
     int rt_priority = 0;              // SCHED_FIFO priority of the frame loop, 0: normal scheduling
     int cpu = -1;                     // pin the frame loop to this CPU, -1: any
     bool lock_memory = false;         // mlockall(MCL_CURRENT | MCL_FUTURE)
@@ -57,7 +58,9 @@ struct ControlSettings {                 // [control]: tunables
     double gain = 4.0;                   // rad/s per rad of angular error
     double deadband_deg = 0.3;           // errors smaller than this command zero velocity
     double lead_ms = 20.0;               // predictive: aim this far ahead, beyond the unit's own latency
-    double target_accel_deg_s2 = 60.0;   // predictive: how hard targets accelerate (Kalman process noise)
+    std::string target_motion = "velocity";  // predictive: the filter's model, velocity | acceleration
+    double target_accel_deg_s2 = 60.0;   // predictive, velocity model: how hard targets accelerate (Kalman process noise)
+    double target_jerk_deg_s3 = 2000.0;  // predictive, acceleration model: how fast their acceleration changes
     double sighting_noise_px = 0.7;      // predictive: 1 σ of the contour centre's position
     double still_deg_s = 0.3;            // the unit counts as still below this rate (frame differencing runs only then)
     double coast_s = 1.0;                // predictive: follow the prediction this long after losing the contour

@@ -55,13 +55,16 @@ void add_sim(ParamTable<DaemonConfig>& table) {
              "the world as an equirectangular PNG (its width spans 360 degrees); empty: generated from the seed")
         .add("latency_frames", &SimSettings::latency_frames, "frames", 0, kMaxSimLatencyFrames,
              "camera latency: each frame shows the world and the unit as they were this many frame periods "
-             "before it is delivered and stamped (a camera that does not time-stamp its exposures)");
+             "before it is delivered")
+        .add("stamp_exposure", &SimSettings::stamp_exposure,
+             "stamp each frame with its exposure time, as V4L2 cameras do; false: with its delivery time "
+             "(a camera that does not time-stamp its exposures, whose latency the loop cannot see)");
 }
 
 void add_loop(ParamTable<DaemonConfig>& table) {
     table.section("loop", ParamKind::Tunable, &DaemonConfig::loop)
         .add("budget_ms", &LoopSettings::budget_ms, "ms", 0.05, 1000,
-             "tracking deadline after the frame's capture time; refinement stops there (any-time)");
+             "tracking deadline after the frame reached raysd; refinement stops there (any-time)");
     table.section("loop", ParamKind::Capacity, &DaemonConfig::loop)
         .add("rt_priority", &LoopSettings::rt_priority, "", 0, 99,
              "SCHED_FIFO priority of the frame loop, 0: normal scheduling")
@@ -89,8 +92,13 @@ void add_control(ParamTable<DaemonConfig>& table) {
              "target is also still)")
         .add("lead_ms", &ControlSettings::lead_ms, "ms", 0, 1000,
              "predictive: aim where target and unit will be this much later, beyond the unit's own latency")
+        .add_choice("target_motion", &ControlSettings::target_motion, "velocity|acceleration",
+                    "predictive: the Kalman filter's motion model: constant velocity, or constant acceleration "
+                    "(for targets that swing and turn hard, seen with camera latency)")
         .add("target_accel_deg_s2", &ControlSettings::target_accel_deg_s2, "deg/s^2", 0.01, 100000,
-             "predictive: how hard targets accelerate (the Kalman filter's process noise)")
+             "predictive, velocity model: how hard targets accelerate (the Kalman filter's process noise)")
+        .add("target_jerk_deg_s3", &ControlSettings::target_jerk_deg_s3, "deg/s^3", 0.01, 1000000,
+             "predictive, acceleration model: how fast targets change their acceleration (process noise)")
         .add("sighting_noise_px", &ControlSettings::sighting_noise_px, "px", 0.01, 100,
              "predictive: 1 sigma of the contour centre's position (the Kalman filter's measurement noise)")
         .add("still_deg_s", &ControlSettings::still_deg_s, "deg/s", 0, 100,

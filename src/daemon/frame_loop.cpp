@@ -86,9 +86,7 @@ bool FrameLoop::commands_motion() const {
 
 double FrameLoop::seconds(TimePoint t) const { return Seconds(t - started_).count(); }
 
-control::UnitPose FrameLoop::unit_pose(TimePoint t) const {
-    return control::UnitPose::of(unit_, seconds(unit_.stamp)).at(seconds(t));
-}
+control::UnitPose FrameLoop::unit_pose(TimePoint t) const { return pose_history_.at(seconds(t)); }
 
 void FrameLoop::run() {
     while (!channels_.stop.load(std::memory_order_acquire)) step();
@@ -165,8 +163,10 @@ void FrameLoop::apply_tunables(const LoopTunables& tunables) {
 }
 
 void FrameLoop::track_frame(TimePoint now) {
+    // The budget counts from the frame's arrival: a camera's stamp (its exposure) may be well before.
+    const TimePoint arrived = frame_.arrived == TimePoint{} ? frame_.stamp : frame_.arrived;
     TimePoint deadline =
-        frame_.stamp + std::chrono::duration_cast<TimePoint::duration>(
+        arrived + std::chrono::duration_cast<TimePoint::duration>(
                            std::chrono::duration<double, std::milli>(tunables_.budget_ms));
     if (deadline <= now) ++stats_.late_frames;
     last_frame_at_ = now;
@@ -237,6 +237,7 @@ void FrameLoop::drive_unit(TimePoint now) {
     commanded_ = next_command(now);
     ptu::DriverStatus wrote = ptu_.write(commanded_, now);
     ptu::DriverStatus got = ptu_.read(unit_, now);
+    if (got.ok) pose_history_.record(control::UnitPose::of(unit_, seconds(unit_.stamp)));
     bool ok = wrote.ok && got.ok;
     if (!ok) {
         ++stats_.driver_errors;

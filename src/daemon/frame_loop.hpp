@@ -15,6 +15,7 @@
 
 #include "control/lost_policy.hpp"
 #include "control/predictive_controller.hpp"
+#include "control/pose_history.hpp"
 #include "control/proportional_controller.hpp"
 #include "core/clock.hpp"
 #include "core/contour_tracker.hpp"
@@ -50,7 +51,7 @@ private:
     ptu::PtuCommand next_command(TimePoint now) const;
     double seconds(TimePoint t) const;
     bool commands_motion() const;  // the last command written moves the unit (or has not arrived)
-    control::UnitPose unit_pose(TimePoint t) const;  // the unit's last reported state, extrapolated to t
+    control::UnitPose unit_pose(TimePoint t) const;  // the unit at t, from its reports (pose_history_)
     void set_controllers();
     void drive_unit(TimePoint now);
     void publish(TimePoint now, TimePoint step_start);
@@ -86,6 +87,7 @@ private:
     bool jogging_ = false;
     ptu::PtuCommand commanded_;       // the last command written
     ptu::PtuState unit_;
+    control::PoseHistory pose_history_;  // the unit's recent reports, for the pose at a frame's exposure
     ptu::DriverStatus driver_status_;
     bool camera_was_connected_ = true;
 };

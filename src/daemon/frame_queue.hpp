@@ -17,6 +17,7 @@ struct CapturedFrame {
     GreyImage image;
     long index = -1;       // the source's own frame number
     TimePoint stamp{};     // capture time on the monotonic clock
+    TimePoint arrived{};   // when it reached raysd; the tracking budget counts from here (stamp when unset)
 };
 
 class FrameQueue {

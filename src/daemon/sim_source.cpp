@@ -76,7 +76,9 @@ FrameSource::Result SimSource::next(CapturedFrame& out, std::chrono::millisecond
                     then.tilt + scenario.initial_tilt_rad, *view_);
     out.image = view_->image;
     out.index = delivered_++;
-    out.stamp = due;
+    out.stamp = settings_.stamp_exposure
+                    ? start_ + std::chrono::duration_cast<TimePoint::duration>(Seconds(static_cast<double>(shown) / settings_.fps))
+                    : due;
     return Result::Frame;
 }
 

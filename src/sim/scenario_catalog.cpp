@@ -120,14 +120,14 @@ Scenario soak_clutter() { return soak_at(10, 1.0, 8); }
 
 // Speed ramp: a textured disc 8° across swinging in azimuth as 80°·sin φ(t) — wider than the field of
 // view, so a camera that cannot keep up loses it — the rate of φ rising linearly from 1/16 rad/s at
-// t = 0 to 5/2 rad/s at t = 120 s and staying there (Wave's chirp), so the peak speed of each swing,
-// 80°·φ'(t), grows from 5 deg/s to 200 deg/s over 120 s:
-//   peak azimuth rate(t) = 5 + 195·min(t, 120)/120 deg/s (angular speed: cos 12° = 0.978 times that).
+// t = 0 to 5 rad/s at t = 160 s and staying there (Wave's chirp), so the peak speed of each swing,
+// 80°·φ'(t), grows from 5 deg/s to 400 deg/s over 160 s:
+//   peak azimuth rate(t) = 5 + 395·min(t, 160)/160 deg/s (angular speed: cos 12° = 0.978 times that).
 // The elevation sways as 2°·cos(t/2 s⁻¹) around −12° (the ground, below the buildings: the ramp
 // measures speed, not clutter), adding at most 1 deg/s. No occluders, mild noise, fixed exposure.
 Scenario ramp() {
     Scenario s;
-    const Wave sweep{deg(80), 1.0 / 16.0, 5.0 / 2.0, 120.0, 0.0};
+    const Wave sweep{deg(80), 1.0 / 16.0, 5.0, 160.0, 0.0};
     const auto path = waves_deg(0, -12, {sweep}, {wave_deg(2, 4 * std::numbers::pi, std::numbers::pi / 2)});
     s.targets.push_back({DiscShape{8}, 55, 25, 1.5, path, {}});
     s.noise_sigma = 2;

@@ -67,3 +67,50 @@ TEST_CASE("a sighting far outside the prediction restarts the filter there") {
     CHECK(now.angles.elevation == Approx(0.4));
     CHECK(now.azimuth_rate == 0.0);
 }
+
+TEST_CASE("the acceleration model predicts a swinging target where the velocity model overshoots") {
+    // A target swinging as 80°·sin(3 t) (240 deg/s at the middle, 720 deg/s² at the ends), seen at
+    // 25 fps; each filter predicts 0.15 s past its last sighting, as the loop does with camera latency.
+    auto truth = [](double t) { return 80 * kDeg * std::sin(3.0 * t); };
+    auto prediction_error = [&](TargetFilterSettings settings) {
+        settings.measurement_rad = 0.05 * kDeg;
+        TargetFilter filter(settings);
+        std::mt19937 random(3);
+        std::normal_distribution<double> noise(0.0, settings.measurement_rad);
+        double worst = 0;
+        for (int k = 0; k <= 250; ++k) {
+            const double t = k * kFrame;
+            filter.update({truth(t) + noise(random), 0.0}, t);
+            if (k >= 50) worst = std::max(worst, std::abs(filter.at(t + 0.15).angles.azimuth - truth(t + 0.15)));
+        }
+        return worst;
+    };
+    TargetFilterSettings velocity;
+    velocity.accel_rad_s2 = 720 * kDeg;
+    TargetFilterSettings acceleration;
+    acceleration.motion = TargetMotion::ConstantAcceleration;
+    acceleration.jerk_rad_s3 = 2200 * kDeg;  // the swing's largest jerk, 80°·3³
+    const double v = prediction_error(velocity), a = prediction_error(acceleration);
+    INFO("worst error 0.15 s ahead: velocity model " << v / kDeg << " deg, acceleration model " << a / kDeg << " deg");
+    CHECK(a < 5 * kDeg);
+    CHECK(v > 2 * a);
+}
+
+TEST_CASE("the acceleration model recovers a constant acceleration, and at rest stays at rest") {
+    TargetFilterSettings settings;
+    settings.motion = TargetMotion::ConstantAcceleration;
+    settings.jerk_rad_s3 = 0.5;
+    settings.measurement_rad = 0.05 * kDeg;
+    TargetFilter filter(settings);
+    const double accel = 20 * kDeg;  // from 0, along azimuth
+    for (int k = 0; k <= 75; ++k) {
+        const double t = k * kFrame;
+        filter.update({0.5 * accel * t * t, 2 * kDeg}, t);
+    }
+    const double t = 75 * kFrame;
+    const TargetEstimate now = filter.at(t);
+    CHECK(now.azimuth_rate == Approx(accel * t).margin(1 * kDeg));
+    CHECK(filter.at(t + 0.5).angles.azimuth == Approx(0.5 * accel * (t + 0.5) * (t + 0.5)).margin(0.5 * kDeg));
+    CHECK(now.elevation_rate == Approx(0.0).margin(0.1 * kDeg));
+    CHECK(filter.at(t + 0.5).angles.elevation == Approx(2 * kDeg).margin(0.1 * kDeg));
+}

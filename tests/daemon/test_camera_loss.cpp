@@ -74,7 +74,7 @@ TEST_CASE("a camera unplugged while tracking stops the axes until it is back") {
     ServiceNotifier notifier;
     FrameLoop loop(config, channels, limiter, notifier, clock);
     UnpluggableSource source;
-    CaptureThread capture(source, channels);
+    CaptureThread capture(source, channels, clock);
     capture.start();
     std::thread loop_thread([&] { loop.run(); });
 

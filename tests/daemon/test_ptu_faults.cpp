@@ -47,7 +47,7 @@ TEST_CASE("a PTU fault stops the axes, is reported in status and log, and contro
     REQUIRE(limiter.activate().ok);
     ServiceNotifier notifier;
     FrameLoop loop(config, channels, limiter, notifier, clock);
-    CaptureThread capture(*source, channels);
+    CaptureThread capture(*source, channels, clock);
     capture.start();
     std::thread loop_thread([&] { loop.run(); });
     auto status = [&] {

@@ -25,7 +25,7 @@ double speed_deg_s(const Scenario& s, double t) { return angular_speed(primary_a
 
 // The ramp's documented envelope of the peak azimuth rate per swing, deg/s; its angular speed is
 // cos(elevation) times that, the elevation swaying within −12 ± 2°.
-double ramp_envelope(double t) { return 5.0 + 195.0 * std::min(t, 120.0) / 120.0; }
+double ramp_envelope(double t) { return 5.0 + 395.0 * std::min(t, 160.0) / 160.0; }
 double cos_deg(double degrees) { return std::cos(degrees * std::numbers::pi / 180.0); }
 
 }  // namespace
@@ -70,13 +70,13 @@ TEST_CASE("patrol: the walker crosses ±40° at 7–15 deg/s with pauses, and th
     CHECK(s.exposure.gain(12.5) == Approx(1.12));  // a quarter of the 50 s drift
 }
 
-TEST_CASE("ramp: the peak speed of each swing grows from 5 to 200 deg/s over 120 s, as documented") {
+TEST_CASE("ramp: the peak speed of each swing grows from 5 to 400 deg/s over 160 s, as documented") {
     const Scenario s = named("ramp");
     CHECK(s.occluders.empty());
     CHECK(speed_deg_s(s, 0.0) == Approx(5.0 * cos_deg(10.0)).epsilon(0.002));  // at t = 0 the elevation is −10°  // the swing's middle, no elevation motion
     // The largest speed within windows of two swings (φ' = envelope / 80°) lies between the envelope
     // at the window's ends, plus the elevation's sway of at most 1 deg/s.
-    for (double t : {5.0, 20.0, 45.0, 70.0, 95.0, 118.0, 125.0, 300.0, 1800.0}) {
+    for (double t : {5.0, 20.0, 45.0, 70.0, 95.0, 118.0, 140.0, 158.0, 165.0, 300.0, 1800.0}) {
         const double rate = ramp_envelope(t) / 80.0;
         const double window = 2 * std::numbers::pi / rate, lo = std::max(0.0, t - window / 2), hi = t + window / 2;
         double fastest = 0;

@@ -1,6 +1,7 @@
 // rays-soak: the closed loop (simulated pan/tilt camera, raysd's frame loop, mock unit) run headless
 // faster than real time, judged against the simulator's ground truth. See soak_metrics.hpp for the
 // rules and README.md for the figures.
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -8,6 +9,7 @@
 #include "daemon/daemon_params.hpp"
 #include "soak_metrics.hpp"
 #include "soak_options.hpp"
+#include "sim/scenario.hpp"
 #include "soak_plot.hpp"
 
 namespace {
@@ -35,6 +37,8 @@ nlohmann::json summary_json(const SoakSummary& s) {
 
 nlohmann::json setup_json(const daemon::DaemonConfig& c, long frames) {
     return {{"scenario", c.sim.scenario}, {"seed", c.sim.seed},        {"fps", c.sim.fps},
+            {"latency_frames", c.sim.latency_frames}, {"target_motion", c.control.target_motion},
+            {"fov_deg", {c.control.horizontal_fov_deg, c.control.vertical_fov_deg}},
             {"frames", frames},           {"method", c.tracker.method == TrackerMethod::Snake ? "snake" : "rays"},
             {"law", c.control.law},       {"gain", c.control.gain},    {"budget_ms", c.loop.budget_ms},
             {"rays", c.tracker.tunables.rays.count}, {"hypotheses", c.tracker.tunables.rays.hypotheses},
@@ -61,6 +65,85 @@ void print_summary(const daemon::DaemonConfig& c, const SoakSummary& s) {
                 s.max_abs_tilt_rate_deg_s, c.ptu.motion.max_velocity_deg_s);
 }
 
+// One closed-loop run: its summary printed (or kept for --json), with the plot and trace written when asked.
+std::optional<nlohmann::json> run_once(const SoakRun& run, const SoakOptions& options, bool single, SoakSummary& summary) {
+    std::string error;
+    std::vector<SoakFrame> frames = run_closed_loop(run, error);
+    if (frames.empty()) {
+        std::fprintf(stderr, "rays-soak: %s\n", error.c_str());
+        return std::nullopt;
+    }
+    summary = summarise(frames);
+    if (!options.json) print_summary(run.config, summary);
+    if (single && !options.plot_path.empty() && !write_plot(options.plot_path, frames, error)) {
+        std::fprintf(stderr, "rays-soak: plot %s: %s\n", options.plot_path.c_str(), error.c_str());
+        return std::nullopt;
+    }
+    if (single && !options.trace_path.empty() && !write_trace(options.trace_path, frames, error)) {
+        std::fprintf(stderr, "rays-soak: trace %s: %s\n", options.trace_path.c_str(), error.c_str());
+        return std::nullopt;
+    }
+    nlohmann::json row = summary_json(summary);
+    row["config"] = setup_json(run.config, run.frames);
+    return row;
+}
+
+// --compare: the proportional law at each gain, the predictive law, the greedy snake; one table.
+int compare(const SoakRun& run, const SoakOptions& options) {
+    nlohmann::json proportional = nlohmann::json::array();
+    double best_gain = 0, best_speed = -1;
+    SoakSummary summary;
+    for (double gain : options.compare_gains) {
+        SoakRun swept = run;
+        swept.config.control.law = "proportional";
+        swept.config.control.gain = gain;
+        std::optional<nlohmann::json> row = run_once(swept, options, false, summary);
+        if (!row) return 1;
+        proportional.push_back(*row);
+        if (summary.max_speed_deg_s > best_speed) {
+            best_speed = summary.max_speed_deg_s;
+            best_gain = gain;
+        }
+    }
+    const SoakRun predictive_run = [&] {
+        SoakRun r = run;
+        r.config.control.law = "predictive";
+        return r;
+    }();
+    std::optional<nlohmann::json> predictive = run_once(predictive_run, options, false, summary);
+    if (!predictive) return 1;
+    const double predictive_speed = summary.max_speed_deg_s;
+    SoakRun snake_run = predictive_run;
+    snake_run.config.tracker.method = TrackerMethod::Snake;
+    std::optional<nlohmann::json> snake = run_once(snake_run, options, false, summary);
+    if (!snake) return 1;
+    const double snake_speed = summary.max_speed_deg_s;
+    const double law_ratio = predictive_speed / std::max(best_speed, 1e-9);
+    const double method_ratio = predictive_speed / std::max(snake_speed, 1e-9);
+    if (options.json) {
+        std::printf("%s\n", nlohmann::json{{"proportional", proportional},
+                                           {"best_proportional_gain", best_gain},
+                                           {"predictive", *predictive},
+                                           {"snake", *snake},
+                                           {"predictive_over_proportional", law_ratio},
+                                           {"rays_over_snake", method_ratio}}
+                                 .dump()
+                                 .c_str());
+        return 0;
+    }
+    std::printf("\nfastest target kept (deg/s), one config, scenario %s:\n", run.config.sim.scenario.c_str());
+    std::printf("  active rays, proportional, best gain %g/s: %.1f\n", best_gain, best_speed);
+    std::printf("  active rays, predictive (%s model), gain %g/s: %.1f  (%.2f x the proportional)\n",
+                run.config.control.target_motion.c_str(), run.config.control.gain, predictive_speed, law_ratio);
+    std::printf("  greedy snake (%d points, alpha %g, beta %g, gamma %g, %dx%d, <= %d passes), predictive: %.1f"
+                "  (active rays %.2f x faster)\n",
+                run.config.tracker.tunables.snake.points, run.config.tracker.tunables.snake.alpha,
+                run.config.tracker.tunables.snake.beta, run.config.tracker.tunables.snake.gamma,
+                run.config.tracker.tunables.snake.neighbourhood, run.config.tracker.tunables.snake.neighbourhood,
+                run.config.tracker.tunables.snake.max_iterations, snake_speed, method_ratio);
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,12 +167,19 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    run.config.sim.scenario = options.scenario;
+    if (options.scenario) {
+        if (!sim::make_scenario(*options.scenario, 0)) {
+            std::fprintf(stderr, "rays-soak: --scenario: '%s' is not a known scenario\n%s\n", options.scenario->c_str(), kUsage);
+            return 2;
+        }
+        run.config.sim.scenario = *options.scenario;
+    }
     if (options.seed) run.config.sim.seed = *options.seed;
     if (options.law) run.config.control.law = *options.law;
     if (options.method) run.config.tracker.method = *options.method == "snake" ? TrackerMethod::Snake : TrackerMethod::Rays;
     if (options.gain) run.config.control.gain = *options.gain;
     if (options.budget_ms) run.config.loop.budget_ms = *options.budget_ms;
+    if (!options.compare_gains.empty()) return compare(run, options);
 
     std::vector<double> gains = options.sweep_gains;
     if (gains.empty()) gains.push_back(run.config.control.gain);
@@ -97,29 +187,14 @@ int main(int argc, char** argv) {
     double best_gain = gains.front(), best_speed = -1;
     for (double gain : gains) {
         run.config.control.gain = gain;
-        std::string error;
-        std::vector<SoakFrame> frames = run_closed_loop(run, error);
-        if (frames.empty()) {
-            std::fprintf(stderr, "rays-soak: %s\n", error.c_str());
-            return 1;
-        }
-        SoakSummary summary = summarise(frames);
+        SoakSummary summary;
+        std::optional<nlohmann::json> row = run_once(run, options, gains.size() == 1, summary);
+        if (!row) return 1;
         if (summary.max_speed_deg_s > best_speed) {
             best_speed = summary.max_speed_deg_s;
             best_gain = gain;
         }
-        if (!options.json) print_summary(run.config, summary);
-        nlohmann::json row = summary_json(summary);
-        row["config"] = setup_json(run.config, run.frames);
-        sweep.push_back(row);
-        if (!options.plot_path.empty() && gains.size() == 1 && !write_plot(options.plot_path, frames, error)) {
-            std::fprintf(stderr, "rays-soak: plot %s: %s\n", options.plot_path.c_str(), error.c_str());
-            return 1;
-        }
-        if (!options.trace_path.empty() && gains.size() == 1 && !write_trace(options.trace_path, frames, error)) {
-            std::fprintf(stderr, "rays-soak: trace %s: %s\n", options.trace_path.c_str(), error.c_str());
-            return 1;
-        }
+        sweep.push_back(*row);
     }
     if (gains.size() > 1 && !options.json)
         std::printf("best gain for the fastest target kept: %g/s (%.1f deg/s)\n", best_gain, best_speed);

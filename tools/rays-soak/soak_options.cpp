@@ -36,7 +36,7 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             continue;
         }
         static constexpr std::string_view kValued[] = {"--frames", "--scenario", "--seed", "--config", "--law",
-                                                       "--method", "--gain", "--sweep-gain", "--budget-ms", "--plot", "--trace", "--overlay", "--overlay-window"};
+                                                       "--method", "--gain", "--sweep-gain", "--compare", "--budget-ms", "--plot", "--trace", "--overlay", "--overlay-window"};
         if (std::find(std::begin(kValued), std::end(kValued), arg) == std::end(kValued))
             return "unknown argument '" + std::string(arg) + "'";
         if (i + 1 == argc) return std::string(arg) + " needs a value";
@@ -51,7 +51,7 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             if (!n || *n < 0) return bad + " (an integer ≥ 0)";
             out.seed = *n;
         } else if (arg == "--scenario") {
-            out.scenario = value;
+            out.scenario = std::string(value);
         } else if (arg == "--config") {
             out.config_path = value;
         } else if (arg == "--plot") {
@@ -77,18 +77,22 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             std::optional<double> v = positive(value);
             if (!v) return bad + " (a positive number)";
             (arg == "--gain" ? out.gain : out.budget_ms) = *v;
-        } else {  // --sweep-gain
+        } else {  // --sweep-gain, --compare
+            std::vector<double>& gains = arg == "--compare" ? out.compare_gains : out.sweep_gains;
             std::string_view rest = value;
             while (!rest.empty()) {
                 std::size_t comma = rest.find(',');
                 std::optional<double> v = positive(rest.substr(0, comma));
                 if (!v) return bad + " (positive numbers separated by commas)";
-                out.sweep_gains.push_back(*v);
+                gains.push_back(*v);
                 rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
             }
         }
     }
-    if (out.gain && !out.sweep_gains.empty()) return "--gain and --sweep-gain exclude each other";
+    const int modes = (out.gain ? 1 : 0) + (out.sweep_gains.empty() ? 0 : 1) + (out.compare_gains.empty() ? 0 : 1);
+    if (modes > 1) return "--gain, --sweep-gain and --compare exclude each other";
+    if (!out.compare_gains.empty() && (out.law || out.method))
+        return "--compare runs both laws and both methods itself: no --law or --method";
     return std::nullopt;
 }
 

@@ -7,20 +7,24 @@
 namespace rays::soak {
 
 inline constexpr const char* kUsage =
-    "usage: rays-soak [--frames N] [--scenario soak|ramp|patrol|crowd] [--seed N] [--config FILE.ini]\n"
-    "                 [--law predictive|proportional] [--method rays|snake] [--gain G | --sweep-gain G1,G2,...]\n"
+    "usage: rays-soak [--frames N] [--scenario soak|soak-clutter|ramp|patrol|crowd] [--seed N] [--config FILE.ini]\n"
+    "                 [--law predictive|proportional] [--method rays|snake]\n"
+    "                 [--gain G | --sweep-gain G1,G2,... | --compare G1,G2,...]\n"
     "                 [--budget-ms B] [--json] [--plot FILE.png] [--trace FILE.csv]\n"
     "                 [--overlay DIR [--overlay-window FROM_S,TO_S]]";
 
 struct SoakOptions {
     long frames = 45000;
-    std::string scenario = "soak";
+    std::optional<std::string> scenario;  // overrides sim.scenario (raysd's default: soak)
     std::optional<int> seed;
     std::string config_path;          // empty: raysd's built-in defaults
     std::optional<std::string> law;   // overrides control.law
     std::optional<std::string> method;  // overrides track.method
     std::optional<double> gain;       // overrides control.gain
     std::vector<double> sweep_gains;  // one run per gain
+    // The speed comparison: the proportional law at each of these gains, then the predictive law and
+    // the greedy snake (with the predictive law), all on the same config; the fastest targets side by side.
+    std::vector<double> compare_gains;
     std::optional<double> budget_ms;  // overrides loop.budget_ms
     bool json = false;
     std::string plot_path;

@@ -13,7 +13,7 @@ struct ContourPoint {
     float lambda = 0;        // distance from ref, px
     bool no_edge = false;    // "no edge on this ray": λ interpolated from the neighbours
     float grad = 0;          // dρ/dλ at the chosen edge (0 when no_edge)
-    float inside_mean = 0;   // grey mean between ref and the edge (0 when no_edge)
+    float inside_mean = 0;   // grey mean on the outer two thirds from ref to the edge (0 when no_edge)
     float inside_sd = 0;     // grey spread there
     float outside_mean = -1; // grey mean of a short band just outside the edge (< 0: off the image)
 };

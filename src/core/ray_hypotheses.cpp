@@ -91,9 +91,13 @@ int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, flo
         Hypothesis& hyp = out[kept++];
         hyp.lambda = lam;
         hyp.grad = grad_[j];
-        const int in_end = std::max(1, j - margin);  // samples [0, in_end)
-        hyp.inside_mean = prefix_[in_end] / static_cast<float>(in_end);
-        hyp.inside_msq = prefix_sq_[in_end] / static_cast<float>(in_end);
+        // The inside: samples [in_end / 3, in_end), the outer two thirds of the way to the edge. Near m
+        // the ray may start on something thin in front of the target (a pole across its middle),
+        // and the part next to the rim is what tells the target's inside from the background.
+        const int in_end = std::max(1, j - margin), in_begin = in_end / 3;
+        const auto inside = static_cast<float>(in_end - in_begin);
+        hyp.inside_mean = (prefix_[in_end] - prefix_[in_begin]) / inside;
+        hyp.inside_msq = (prefix_sq_[in_end] - prefix_sq_[in_begin]) / inside;
         const int o0 = std::min(n, j + margin), o1 = std::min(n, j + margin + band);
         hyp.outside_mean = o1 > o0 ? (prefix_[o1] - prefix_[o0]) / static_cast<float>(o1 - o0) : -1.0f;
     }

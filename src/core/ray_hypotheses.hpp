@@ -11,7 +11,7 @@ namespace rays {
 struct Hypothesis {
     float lambda = 0;       // distance from m along the ray, px (sub-sample refined)
     float grad = 0;         // dρ/dλ at lambda, grey/px; negative where the outside is darker
-    float inside_mean = 0;  // mean grey of the samples between m and the edge
+    float inside_mean = 0;  // mean grey of the samples on the outer two thirds of the way from m to the edge
     float inside_msq = 0;   // mean of their squares (for the region term's spread)
     float outside_mean = -1;  // mean grey of a short band just outside the edge; < 0 when off the image
 };

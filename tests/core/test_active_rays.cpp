@@ -390,3 +390,24 @@ TEST_CASE("Temporal term: the previous contour holds the target against a distra
     CHECK(with >= 0.95);
     CHECK(with >= without + 0.05);
 }
+
+TEST_CASE("Region term: m on a thin bright bar across the target's middle still finds the rim", "[active_rays][terms]") {
+    // A pole (220, 3 px wide) in front of the disc's middle, and m on it, as when the target passes
+    // behind a pole: every ray starts on the pole. The region term judges the inside by the part of
+    // the ray nearer the rim, so those first bright samples do not make every edge look wrong.
+    auto canvas = std::make_unique<Canvas>();
+    canvas->fill(kBackground);
+    canvas->paint(kTarget, kDisc, true);
+    canvas->rect(63, 0, 65, 127, 220);
+    Random random(25);
+    canvas->noise(3, random);
+    auto frame = std::make_unique<SceneFrame>();
+    canvas->finish(*frame);
+    Extraction x;
+    const TargetModel model = learn_on(x, *clean_disc());
+    const Contour& c = x.run(*frame, {kCx, kCy}, model);
+    const double none = static_cast<double>(c.no_edge_rays) / c.size;
+    INFO("rays without an edge " << none << ", IoU " << iou(c, *frame));
+    CHECK(none <= 0.3);
+    CHECK(iou(c, *frame) >= 0.85);
+}

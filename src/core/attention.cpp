@@ -3,12 +3,6 @@
 #include <cmath>
 
 namespace rays {
-namespace {
-
-constexpr double kWholeShare = 0.8;   // a contour with this share of the whole area shows all of the target
-constexpr double kWholeRate = 0.1;    // weight of such a contour in the whole area
-
-}  // namespace
 
 const char* Attention::check(const Contour& contour, Point predicted, const AttentionTunables& limits) {
     const Point previous = current_.centroid;
@@ -25,14 +19,13 @@ const char* Attention::check(const Contour& contour, Point predicted, const Atte
     else if (current_.no_edge_fraction > limits.max_none_fraction)
         reason = "too many rays without an edge";
     else if (has_previous_ && std::abs(current_.area - area_) > limits.max_area_change * area_ &&
-             std::abs(current_.area - whole_area_) > limits.max_area_change * whole_area_)
+             std::abs(current_.area - whole_area_.area()) > limits.max_area_change * whole_area_.area())
         reason = "contour area changed too fast";
     else if (has_previous_ && std::hypot(contour.centroid.x - predicted.x, contour.centroid.y - predicted.y) > limits.max_jump_px)
         reason = "centroid jumped away from its prediction";
     if (reason) return reason;
     area_ = has_previous_ ? 0.7 * area_ + 0.3 * current_.area : current_.area;
-    if (!has_previous_) whole_area_ = current_.area;
-    else if (current_.area >= kWholeShare * whole_area_) whole_area_ += kWholeRate * (current_.area - whole_area_);
+    whole_area_.update(current_.area);
     has_previous_ = true;
     return nullptr;
 }

@@ -13,9 +13,30 @@ struct ContourFeatures {
     double no_edge_fraction = 0;
 };
 
+// The target's running area while nothing hid part of it: a contour with at least kShare of it shows
+// the whole target and moves it; a smaller one (a partly hidden target) leaves it.
+class WholeArea {
+public:
+    static constexpr double kShare = 0.8;
+    static constexpr double kRate = 0.1;  // weight of the newest whole contour
+
+    void reset() { area_ = 0.0; }
+    void update(double area) {
+        if (area_ <= 0.0) area_ = area;
+        else if (area >= kShare * area_) area_ += kRate * (area - area_);
+    }
+    double area() const { return area_; }
+
+private:
+    double area_ = 0.0;
+};
+
 class Attention {
 public:
-    void reset() { has_previous_ = false; }
+    void reset() {
+        has_previous_ = false;
+        whole_area_.reset();
+    }
 
     // Returns nullptr while the contour is plausible, else the reason the target counts as lost.
     // `predicted` is where the centroid was expected this frame.
@@ -24,7 +45,7 @@ public:
 private:
     bool has_previous_ = false;
     double area_ = 0;        // running area, so one noisy frame does not set the reference
-    double whole_area_ = 0;  // the target's area while nothing hid it: a hidden part showing again is no jump
+    WholeArea whole_area_;   // a hidden part showing again is no jump
     ContourFeatures current_;
 };
 

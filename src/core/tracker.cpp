@@ -66,6 +66,7 @@ void Tracker::reinit() {
 
 void Tracker::remember_contour() {
     tracked_area_ = std::max(0.0, contour_.area);
+    whole_area_.update(tracked_area_);
     last_count_ = contour_.size;
     for (int i = 0; i < last_count_; ++i) last_points_[i] = contour_.points[i].p;
 }
@@ -101,7 +102,10 @@ bool Tracker::begin_track(Point m, double radius, bool search, bool same_target,
     if (!same_target) model_.seed(smoothed_, m);
     rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
     if (attention_.check(contour_, contour_.centroid, tunables_.attention) != nullptr) return false;
-    if (!same_target) model_.reset();
+    if (!same_target) {
+        model_.reset();
+        whole_area_.reset();
+    }
     model_.learn(contour_, scratch_);
     remember_contour();
     return true;
@@ -113,6 +117,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     // it must look like the target did: about as grey inside, about as big.
     const TargetModel kept = model_;
     const double area = tracked_area_;
+    const WholeArea whole = whole_area_;
     if (!kept.valid) return false;
     const bool found = begin_track(m, radius, false, false, deadline);
     auto mean_inside = [](const TargetModel& model) {
@@ -122,7 +127,8 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     };
     const double was = mean_inside(kept), now = mean_inside(model_);
     const bool alike = found && std::abs(now - was) <= kReacquireGreyTolerance * std::max<double>(kept.frame_mean, 1.0) &&
-                       contour_.area >= kReacquireAreaRatio * area && contour_.area * kReacquireAreaRatio <= area;
+                       contour_.area >= kReacquireAreaRatio * area && contour_.area * kReacquireAreaRatio <= std::max(area, whole.area());
+    whole_area_ = whole;  // the same target, if alike
     if (!alike) {  // not the target: as if it had not been tried
         model_ = kept;
         tracked_area_ = area;
@@ -189,7 +195,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
         if (start_point_) {
-            const double last_radius = std::sqrt(tracked_area_ / std::numbers::pi);
+            // Its whole size: the last contour may have been a sliver beside an occluder.
+            const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
             found = begin_track(*start_point_, reacquire_ ? last_radius : kStartRadiusPx, false, reacquire_, deadline);
             if (!found && reacquire_ && untracked_frames_ <= kFreshReacquireFrames)
                 found = reacquire_afresh(*start_point_, last_radius, deadline);

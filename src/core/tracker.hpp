@@ -72,6 +72,7 @@ private:
     int lost_frames_ = 0;
     int untracked_frames_ = 0;  // frames since the last one with a contour
     double tracked_area_ = 0;   // area of the last contour accepted as the target
+    WholeArea whole_area_;      // the target's size, for looking for it again after an occlusion
     FrameResult result_;
 };
 

@@ -95,10 +95,13 @@ std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
         sim_camera->render(static_cast<double>(shown) / config.sim.fps, pan + pan0, tilt + tilt0, *view);
         captured->image = view->image;
         captured->index = k;
+        // Arrived now, after rendering (the simulator's own time is no part of the loop's latency);
+        // exposed (k - shown) frame periods before.
         captured->arrived = clock.now();
-        captured->stamp = config.sim.stamp_exposure ? origin + std::chrono::duration_cast<TimePoint::duration>(
-                                                                   Seconds(static_cast<double>(shown) / config.sim.fps))
-                                                    : captured->arrived;
+        captured->stamp = config.sim.stamp_exposure
+                              ? captured->arrived - std::chrono::duration_cast<TimePoint::duration>(
+                                                        Seconds(static_cast<double>(k - shown) / config.sim.fps))
+                              : captured->arrived;
         channels.frames.push(*captured, true, std::chrono::milliseconds(0));
         if (k == 0 && run.start_at_truth)
             channels.commands.push(daemon::make_command(daemon::CommandKind::Track, view->truth.mask_centroid_px.x,

@@ -1,0 +1,44 @@
+// rays-soak's command line: the run modes and what they refuse.
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "soak_options.hpp"
+
+using rays::soak::parse_options;
+using rays::soak::SoakOptions;
+
+namespace {
+
+std::optional<std::string> parse(std::vector<const char*> args, SoakOptions& out) {
+    args.insert(args.begin(), "rays-soak");
+    return parse_options(static_cast<int>(args.size()), args.data(), out);
+}
+
+}  // namespace
+
+TEST_CASE("rays-soak --compare takes the proportional gains to sweep") {
+    SoakOptions o;
+    REQUIRE_FALSE(parse({"--compare", "2,4.5,10", "--config", "rig.ini"}, o));
+    CHECK(o.compare_gains == std::vector<double>{2, 4.5, 10});
+    CHECK(o.sweep_gains.empty());
+    CHECK(o.config_path == "rig.ini");
+    CHECK_FALSE(o.scenario);  // the config's sim.scenario holds
+}
+
+TEST_CASE("rays-soak refuses mixed run modes, and --law or --method with --compare") {
+    SoakOptions a, b, c, d, e;
+    CHECK(parse({"--compare", "2", "--sweep-gain", "4"}, a));
+    CHECK(parse({"--gain", "2", "--compare", "4"}, b));
+    CHECK(parse({"--compare", "2", "--law", "predictive"}, c));
+    CHECK(parse({"--compare", "2", "--method", "snake"}, d));
+    CHECK(parse({"--compare", "2,-1"}, e));
+}
+
+TEST_CASE("rays-soak --scenario overrides the config's scenario only when given") {
+    SoakOptions o;
+    REQUIRE_FALSE(parse({"--scenario", "ramp", "--frames", "100"}, o));
+    REQUIRE(o.scenario);
+    CHECK(*o.scenario == "ramp");
+    CHECK(o.frames == 100);
+}

@@ -21,9 +21,10 @@ public:
     static constexpr double kRate = 0.1;  // weight of the newest whole contour
 
     void reset() { area_ = 0.0; }
+    bool shows_whole(double area) const { return area_ <= 0.0 || area >= kShare * area_; }
     void update(double area) {
         if (area_ <= 0.0) area_ = area;
-        else if (area >= kShare * area_) area_ += kRate * (area - area_);
+        else if (shows_whole(area)) area_ += kRate * (area - area_);
     }
     double area() const { return area_; }
 

@@ -17,6 +17,17 @@ double contour_objectness(const Contour& contour) {
     return contour.size > 0 ? sum / contour.size : 0.0;  // rays without an edge count as 0
 }
 
+double mean_inside_grey(const Contour& contour) {
+    double sum = 0.0;
+    int edges = 0;
+    for (int i = 0; i < contour.size; ++i) {
+        if (contour.points[i].no_edge) continue;
+        sum += contour.points[i].inside_mean;
+        ++edges;
+    }
+    return edges > 0 ? sum / edges : 0.0;
+}
+
 bool contour_contains(const Contour& contour, Point p) {
     bool inside = false;
     for (int i = 0, j = contour.size - 1; i < contour.size; j = i++) {

@@ -48,6 +48,9 @@ struct Contour {
 // among start points of a new track.
 double contour_objectness(const Contour& contour);
 
+// The mean of the rays' inside grey (rays with an edge only; 0 when none has one).
+double mean_inside_grey(const Contour& contour);
+
 // Whether p lies inside the contour polygon (even-odd rule).
 bool contour_contains(const Contour& contour, Point p);
 

@@ -66,6 +66,11 @@ void Tracker::reinit() {
 
 void Tracker::remember_contour() {
     tracked_area_ = std::max(0.0, contour_.area);
+    // What the target looks like whole: an occluder in front of part of it does not get learned here.
+    if (whole_area_.shows_whole(tracked_area_) && model_.frame_mean > 0.0f) {
+        const double grey = mean_inside_grey(contour_) / model_.frame_mean;
+        whole_grey_ = whole_grey_ <= 0.0 ? grey : whole_grey_ + WholeArea::kRate * (grey - whole_grey_);
+    }
     whole_area_.update(tracked_area_);
     last_count_ = contour_.size;
     for (int i = 0; i < last_count_; ++i) last_points_[i] = contour_.points[i].p;
@@ -105,6 +110,7 @@ bool Tracker::begin_track(Point m, double radius, bool search, bool same_target,
     if (!same_target) {
         model_.reset();
         whole_area_.reset();
+        whole_grey_ = 0.0;
     }
     model_.learn(contour_, scratch_);
     remember_contour();
@@ -118,6 +124,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     const TargetModel kept = model_;
     const double area = tracked_area_;
     const WholeArea whole = whole_area_;
+    const double whole_grey = whole_grey_;
     if (!kept.valid) return false;
     const bool found = begin_track(m, radius, false, false, deadline);
     auto mean_inside = [](const TargetModel& model) {
@@ -125,10 +132,16 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
         for (float v : model.inside_mean) sum += v;
         return sum / static_cast<float>(TargetModel::kBins);
     };
+    // As grey as the learned looks, or as the target was when last seen whole (the learned looks may
+    // hold some of what hid part of it).
+    const double frame = std::max<double>(kept.frame_mean, 1.0);
     const double was = mean_inside(kept), now = mean_inside(model_);
-    const bool alike = found && std::abs(now - was) <= kReacquireGreyTolerance * std::max<double>(kept.frame_mean, 1.0) &&
-                       contour_.area >= kReacquireAreaRatio * area && contour_.area * kReacquireAreaRatio <= std::max(area, whole.area());
+    const bool grey_alike = std::abs(now - was) <= kReacquireGreyTolerance * frame ||
+                            (whole_grey > 0.0 && std::abs(now / frame - whole_grey) <= kReacquireGreyTolerance);
+    const bool alike = found && grey_alike && contour_.area >= kReacquireAreaRatio * area &&
+                       contour_.area * kReacquireAreaRatio <= std::max(area, whole.area());
     whole_area_ = whole;  // the same target, if alike
+    whole_grey_ = whole_grey;
     if (!alike) {  // not the target: as if it had not been tried
         model_ = kept;
         tracked_area_ = area;

@@ -73,6 +73,7 @@ private:
     int untracked_frames_ = 0;  // frames since the last one with a contour
     double tracked_area_ = 0;   // area of the last contour accepted as the target
     WholeArea whole_area_;      // the target's size, for looking for it again after an occlusion
+    double whole_grey_ = 0;     // its inside grey / the frame's mean grey while whole (running; 0: none yet)
     FrameResult result_;
 };
 

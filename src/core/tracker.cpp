@@ -210,16 +210,18 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
         if (start_point_) {
             // Its whole size: the last contour may have been a sliver beside an occluder.
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
-            found = begin_track(*start_point_, reacquire_ ? last_radius : kStartRadiusPx, false, reacquire_, deadline);
-            if (!found && reacquire_ && untracked_frames_ <= kFreshReacquireFrames)
-                found = reacquire_afresh(*start_point_, last_radius, deadline);
+            // A re-acquisition tries the learned looks, then (just after the loss) afresh.
+            auto reacquire = [&](Point m) {
+                return begin_track(m, last_radius, false, true, deadline) ||
+                       (untracked_frames_ <= kFreshReacquireFrames && reacquire_afresh(m, last_radius, deadline));
+            };
+            found = reacquire_ ? reacquire(*start_point_) : begin_track(*start_point_, kStartRadiusPx, false, false, deadline);
             // Something thin in front of the target's middle (a pole) hides the point itself: look
             // to either side of it, and above and below.
             for (int side = 0; !found && reacquire_ && side < 4; ++side) {
                 const double d = kReacquireSideShift * last_radius;
                 const Point offsets[] = {{-d, 0.0}, {d, 0.0}, {0.0, -d}, {0.0, d}};
-                const Point m{start_point_->x + offsets[side].x, start_point_->y + offsets[side].y};
-                found = begin_track(m, last_radius, false, true, deadline);
+                found = reacquire({start_point_->x + offsets[side].x, start_point_->y + offsets[side].y});
             }
             start_point_.reset();
         } else if (has_previous_ && detection_allowed_) {

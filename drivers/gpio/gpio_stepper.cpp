@@ -9,7 +9,7 @@ namespace rays::gpio {
 
 GpioStepper::GpioStepper(const StepperConfig& config, GpioLines& lines, const Clock& clock,
                          std::unique_ptr<GpioLines> owned)
-    : config_(config), owned_(std::move(owned)), lines_(lines), clock_(clock), engine_(config, lines, clock) {}
+    : config_(config), owned_(std::move(owned)), lines_(lines), engine_(config, lines, clock) {}
 
 GpioStepper::~GpioStepper() {
     if (active_) deactivate();

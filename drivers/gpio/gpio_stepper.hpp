@@ -41,7 +41,6 @@ private:
     StepperConfig config_;
     std::unique_ptr<GpioLines> owned_;
     GpioLines& lines_;
-    const Clock& clock_;
     PulseEngine engine_;
     EngineReport last_;  // the newest report read() saw
     bool configured_ = false;

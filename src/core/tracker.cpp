@@ -12,7 +12,8 @@ constexpr int kStartCandidates = 6;     // start points tried round a detected r
 constexpr double kVelocityRate = 0.7;     // weight of the newest centroid step in the velocity
 constexpr double kRetryMinSpeedPx = 1.0;  // slower targets are not worth a second prediction
 constexpr double kReacquireGreyTolerance = 0.15;  // of the frame's mean grey: a fresh re-acquisition's inside
-constexpr double kReacquireAreaRatio = 0.3;       // its area within this factor of the lost contour's, either way
+constexpr double kReacquireAreaRatio = 0.3;       // its area within this factor of the lost contour's (or
+                                                  // above, of the whole target's), either way
 constexpr double kReacquireSideShift = 0.6;       // of the target's radius: the points beside a hidden middle
 constexpr int kFreshReacquireFrames = 10;         // ... and only this soon after the loss (a target in passing
                                                   // behind something thin, not one that is gone)

@@ -3,6 +3,7 @@
 #pragma once
 #include "core/contour.hpp"
 #include "core/tracker_config.hpp"
+#include "core/whole_area.hpp"
 
 namespace rays {
 
@@ -11,25 +12,6 @@ struct ContourFeatures {
     Point centroid;        // first moments / area
     double speed_px = 0;   // centroid displacement since the previous frame, px/frame
     double no_edge_fraction = 0;
-};
-
-// The target's running area while nothing hid part of it: a contour with at least kShare of it shows
-// the whole target and moves it; a smaller one (a partly hidden target) leaves it.
-class WholeArea {
-public:
-    static constexpr double kShare = 0.8;
-    static constexpr double kRate = 0.1;  // weight of the newest whole contour
-
-    void reset() { area_ = 0.0; }
-    bool shows_whole(double area) const { return area_ <= 0.0 || area >= kShare * area_; }
-    void update(double area) {
-        if (area_ <= 0.0) area_ = area;
-        else if (shows_whole(area)) area_ += kRate * (area - area_);
-    }
-    double area() const { return area_; }
-
-private:
-    double area_ = 0.0;
 };
 
 class Attention {

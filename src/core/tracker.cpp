@@ -70,7 +70,7 @@ void Tracker::remember_contour() {
     // What the target looks like whole: an occluder in front of part of it does not get learned here.
     if (whole_area_.shows_whole(tracked_area_) && model_.frame_mean > 0.0f) {
         const double grey = mean_inside_grey(contour_) / model_.frame_mean;
-        whole_grey_ = whole_grey_ <= 0.0 ? grey : whole_grey_ + WholeArea::kRate * (grey - whole_grey_);
+        whole_grey_ = whole_grey_ <= 0.0 ? grey : whole_grey_ + whole_area_.rate() * (grey - whole_grey_);
     }
     whole_area_.update(tracked_area_);
     last_count_ = contour_.size;

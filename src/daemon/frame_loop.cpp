@@ -17,8 +17,6 @@ using Micros = std::chrono::duration<float, std::micro>;
 // The loop writes to the unit at least this often, frames or not, so the limiter's braking plan holds.
 constexpr Seconds kLongestWait{0.05};
 constexpr double kArrivalS = 0.1;         // a position command this many seconds of still-rate away has arrived
-constexpr double kWholeTarget = 0.85;     // a contour with this share of the target's running area shows all of it
-constexpr double kTargetAreaRate = 0.05;  // weight of the newest whole contour in the target's running area
 
 ptu::PtuCommand position_command(double pan_rad, double tilt_rad) {
     ptu::PtuCommand command;
@@ -191,10 +189,14 @@ void FrameLoop::track_frame(TimePoint now) {
     if (result.has_contour) {
         // A contour much smaller than the target has been is a partly hidden target, whose centre
         // lies off toward the visible part: it counts for less.
-        if (!telemetry_.has_contour) target_area_px_ = contour.area;
-        const double shown = std::clamp(contour.area / std::max(target_area_px_, 1.0), 0.0, 1.0);
-        const double confidence = shown >= kWholeTarget ? 1.0 : std::pow(shown / kWholeTarget, 4.0);
-        if (shown >= kWholeTarget) target_area_px_ += kTargetAreaRate * (contour.area - target_area_px_);
+        if (!telemetry_.has_contour) {
+            target_area_.reset();
+            target_area_.update(contour.area);
+        }
+        const double shown = std::clamp(contour.area / std::max(target_area_.area(), 1.0), 0.0, 1.0);
+        const double whole = target_area_.share();
+        const double confidence = shown >= whole ? 1.0 : std::pow(shown / whole, 4.0);
+        target_area_.update(contour.area);
         controller_->sighted(contour.centroid, at_capture, confidence);
         last_sighting_s_ = at_capture.t_s;
     } else if (controller_->has_target() &&

@@ -19,6 +19,7 @@
 #include "control/proportional_controller.hpp"
 #include "core/clock.hpp"
 #include "core/contour_tracker.hpp"
+#include "core/whole_area.hpp"
 #include "daemon/loop_channels.hpp"
 #include "daemon/service_notifier.hpp"
 #include "drivers/ptu_limiter.hpp"
@@ -69,7 +70,7 @@ private:
     control::Controller* controller_;  // one of the two, by control.law
     control::LostPolicy lost_policy_;
     double last_sighting_s_ = 0.0;  // capture time of the last frame with a contour
-    double target_area_px_ = 0.0;   // the tracked target's running area while whole in view
+    WholeArea target_area_{0.85, 0.05};  // the tracked target's running area while whole in view, px²
     bool still_at_last_frame_ = false;
     bool require_homing_;
     std::chrono::nanoseconds frame_timeout_;  // no frame for this long: the axes stop

@@ -13,7 +13,6 @@ class PoseHistory {
 public:
     static constexpr std::size_t kCapacity = 64;  // at the loop's ≥ 20 writes/s, more than 3 s back
 
-    void clear() { count_ = 0; }
     // A pose the unit reported; times must not decrease (an older one is ignored).
     void record(const UnitPose& pose);
     // The pose at `t_s`: linear between the two reports round it, extrapolated at the reported rate

@@ -53,13 +53,21 @@ void TargetFilter::predict(double t_s, Vector& x, Matrix& p) const {
     p = f * p_ * f.transpose() + q;
 }
 
+void TargetFilter::innovate(WorldAngles measured, const Vector& x, const Matrix& p, double noise_scale,
+                            Eigen::Vector2d& innovation, Eigen::Matrix2d& s) const {
+    innovation << angle_difference(measured.azimuth, x(0)), measured.elevation - x(1);
+    s = p.topLeftCorner<2, 2>();
+    const double r = settings_.measurement_rad * noise_scale;
+    s.diagonal().array() += r * r;
+}
+
 double TargetFilter::distance2(WorldAngles measured, double t_s) const {
     Vector x;
     Matrix p;
     predict(t_s, x, p);
-    Eigen::Vector2d innovation(angle_difference(measured.azimuth, x(0)), measured.elevation - x(1));
-    Eigen::Matrix2d s = p.topLeftCorner<2, 2>();
-    s.diagonal().array() += settings_.measurement_rad * settings_.measurement_rad;
+    Eigen::Vector2d innovation;
+    Eigen::Matrix2d s;
+    innovate(measured, x, p, 1.0, innovation, s);
     return innovation.dot(s.inverse() * innovation);
 }
 
@@ -73,10 +81,9 @@ bool TargetFilter::update(WorldAngles measured, double t_s, double noise_scale) 
     predict(t_s, x, p);
 
     // Update with the measured angles: H = [I 0].
-    Eigen::Vector2d innovation(angle_difference(measured.azimuth, x(0)), measured.elevation - x(1));
-    Eigen::Matrix2d s = p.topLeftCorner<2, 2>();
-    const double r = settings_.measurement_rad * noise_scale;
-    s.diagonal().array() += r * r;
+    Eigen::Vector2d innovation;
+    Eigen::Matrix2d s;
+    innovate(measured, x, p, noise_scale, innovation, s);
     const Eigen::Matrix2d s_inv = s.inverse();
     if (innovation.dot(s_inv * innovation) > settings_.gate_sigma * settings_.gate_sigma) {
         start(measured, t_s);  // not the target we were following, or it turned on a sixpence

@@ -60,6 +60,10 @@ private:
     void start(WorldAngles measured, double t_s);
     // x and P predicted to t_s: x ← F x, P ← F P Fᵀ + Q (discrete white-noise acceleration or jerk).
     void predict(double t_s, Vector& x, Matrix& p) const;
+    // The innovation of a sighting against the predicted x, P (H = [I 0], azimuth wrapped) and its
+    // covariance S = H P Hᵀ + R, the sighting's 1 σ scaled by `noise_scale`.
+    void innovate(WorldAngles measured, const Vector& x, const Matrix& p, double noise_scale,
+                  Eigen::Vector2d& innovation, Eigen::Matrix2d& s) const;
 
     TargetFilterSettings settings_;
     bool started_ = false;

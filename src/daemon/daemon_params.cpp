@@ -3,7 +3,7 @@
 // initialisers in daemon_config.hpp.
 #include "daemon/daemon_params.hpp"
 
-#include "daemon/sim_source.hpp"
+#include "sim/exposure_delay.hpp"
 
 #include "config/config_engine.hpp"
 #include "config/config_table.hpp"
@@ -53,7 +53,7 @@ void add_sim(ParamTable<DaemonConfig>& table) {
         .add("fps", &SimSettings::fps, "1/s", 1, 200, "frames per second the simulated camera delivers")
         .add("panorama_png", &SimSettings::panorama_png,
              "the world as an equirectangular PNG (its width spans 360 degrees); empty: generated from the seed")
-        .add("latency_frames", &SimSettings::latency_frames, "frames", 0, kMaxSimLatencyFrames,
+        .add("latency_frames", &SimSettings::latency_frames, "frames", 0, sim::ExposureDelay::kMaxFrames,
              "camera latency: each frame shows the world and the unit as they were this many frame periods "
              "before it is delivered")
         .add("stamp_exposure", &SimSettings::stamp_exposure,

@@ -39,7 +39,11 @@ std::unique_ptr<SimSource> SimSource::open(const DaemonConfig& config, const Clo
 }
 
 SimSource::SimSource(const SimSettings& settings, std::unique_ptr<sim::SimCamera> camera, const Clock& clock)
-    : settings_(settings), camera_(std::move(camera)), view_(std::make_unique<sim::SimView>()), clock_(clock) {}
+    : settings_(settings),
+      camera_(std::move(camera)),
+      view_(std::make_unique<sim::SimView>()),
+      clock_(clock),
+      delay_(settings.latency_frames, settings.fps, settings.stamp_exposure) {}
 
 void SimSource::unit_angles(TimePoint at, double& pan, double& tilt) const {
     pan = tilt = 0.0;
@@ -66,19 +70,13 @@ FrameSource::Result SimSource::next(CapturedFrame& out, std::chrono::millisecond
     if (due > now) std::this_thread::sleep_until(MonoClock::now() + (due - now));
     double pan = 0.0, tilt = 0.0;
     unit_angles(due, pan, tilt);
-    constexpr auto kPoses = static_cast<long>(kMaxSimLatencyFrames + 1);
-    poses_[static_cast<std::size_t>(delivered_ % kPoses)] = {pan, tilt};
     // With latency, the picture is the one exposed latency_frames ago, at the pose of that moment.
-    const long shown = std::max(0L, delivered_ - settings_.latency_frames);
-    const Pose& then = poses_[static_cast<std::size_t>(shown % kPoses)];
+    const sim::ExposureDelay::Exposure then = delay_.deliver(delivered_, {Seconds(due - start_).count(), pan, tilt, 0, 0});
     const sim::Scenario& scenario = camera_->scenario();
-    camera_->render(static_cast<double>(shown) / settings_.fps, then.pan + scenario.initial_pan_rad,
-                    then.tilt + scenario.initial_tilt_rad, *view_);
+    camera_->render(then.t_s, then.unit.pan + scenario.initial_pan_rad, then.unit.tilt + scenario.initial_tilt_rad, *view_);
     out.image = view_->image;
+    out.stamp = due - delay_.stamp_lead(delivered_);
     out.index = delivered_++;
-    out.stamp = settings_.stamp_exposure
-                    ? start_ + std::chrono::duration_cast<TimePoint::duration>(Seconds(static_cast<double>(shown) / settings_.fps))
-                    : due;
     return Result::Frame;
 }
 

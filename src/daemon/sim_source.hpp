@@ -4,7 +4,6 @@
 // the simulation exactly as through a camera on a rig. Paced in real time at sim.fps; a live source.
 // The rig's pan/tilt zero faces the scenario's start.
 #pragma once
-#include <array>
 #include <atomic>
 #include <memory>
 #include <string>
@@ -13,11 +12,10 @@
 #include "daemon/daemon_config.hpp"
 #include "daemon/frame_source.hpp"
 #include "daemon/loop_channels.hpp"
+#include "sim/exposure_delay.hpp"
 #include "sim/sim_camera.hpp"
 
 namespace rays::daemon {
-
-inline constexpr int kMaxSimLatencyFrames = 15;  // sim.latency_frames at most
 
 // The simulated camera [sim] describes, seeing through the intrinsics [control] gives the
 // controller; null with `error` for an unknown scenario or an unreadable panorama.
@@ -47,10 +45,7 @@ private:
     std::atomic<const LoopChannels*> channels_{nullptr};
     TimePoint start_{};
     long delivered_ = 0;
-    struct Pose {
-        double pan = 0, tilt = 0;
-    };
-    std::array<Pose, kMaxSimLatencyFrames + 1> poses_{};  // the unit's pose at recent frames, by index % size
+    sim::ExposureDelay delay_;  // sim.latency_frames
 };
 
 }  // namespace rays::daemon

@@ -37,6 +37,7 @@
 #include "daemon/sim_source.hpp"
 #include "drivers/calibrated_ptu.hpp"
 #include "drivers/ptu_limiter.hpp"
+#include "sim/exposure_delay.hpp"
 #include "sim/sim_camera.hpp"
 
 namespace {
@@ -117,7 +118,6 @@ public:
         REQUIRE(limiter_->activate().ok);
         channels_.camera_connected.store(true);
         frames_.reserve(4096);
-        units_.reserve(4096);
     }
 
     ~Rig() {
@@ -153,25 +153,20 @@ public:
         const long k = static_cast<long>(frames_.size());
         const double t = static_cast<double>(k) / config_.sim.fps;
         clock_.set(origin_ + std::chrono::duration_cast<TimePoint::duration>(Seconds(t)));
-        ptu::PtuState unit;
-        REQUIRE(calibrated_->read(unit, clock_.now()).ok);
-        units_.push_back(unit);
+        ptu::PtuState state;
+        REQUIRE(calibrated_->read(state, clock_.now()).ok);
         // With camera latency (sim.latency_frames) the frame shows the world and the unit as they were
         // at its exposure, that many frames back; stamped then, or at delivery (sim.stamp_exposure).
-        const long shown = std::max(0L, k - config_.sim.latency_frames);
-        const double t_shown = static_cast<double>(shown) / config_.sim.fps;
-        unit = units_[static_cast<std::size_t>(shown)];
-        const double pan = unit.axes[0].position_rad, tilt = unit.axes[1].position_rad;
+        const sim::ExposureDelay::Exposure exposure = delay_.deliver(k, control::UnitPose::of(state, t));
+        const control::UnitPose& unit = exposure.unit;
         const sim::Scenario& scenario = camera_->scenario();
-        Shot shot{k, t_shown, pan + scenario.initial_pan_rad, tilt + scenario.initial_tilt_rad, *view_};
-        camera_->render(t_shown, shot.world_pan_rad, shot.world_tilt_rad, *view_);
+        Shot shot{k, exposure.t_s, unit.pan + scenario.initial_pan_rad, unit.tilt + scenario.initial_tilt_rad, *view_};
+        camera_->render(exposure.t_s, shot.world_pan_rad, shot.world_tilt_rad, *view_);
         if (hook) hook(shot);
         captured_->image = view_->image;
         captured_->index = k;
         captured_->arrived = clock_.now();
-        captured_->stamp = config_.sim.stamp_exposure
-                               ? origin_ + std::chrono::duration_cast<TimePoint::duration>(Seconds(t_shown))
-                               : clock_.now();
+        captured_->stamp = captured_->arrived - delay_.stamp_lead(k);
         channels_.frames.push(*captured_, false, std::chrono::milliseconds(0));
         loop_->step();
         if (k % 256 == 0) channels_.log.drain();
@@ -180,10 +175,10 @@ public:
         FrameRecord& f = frames_.emplace_back();
         f.k = k;
         f.t_s = t;
-        f.pan_deg = pan * kDegPerRad;
-        f.tilt_deg = tilt * kDegPerRad;
-        f.pan_rate_deg_s = unit.axes[0].velocity_rad_s * kDegPerRad;
-        f.tilt_rate_deg_s = unit.axes[1].velocity_rad_s * kDegPerRad;
+        f.pan_deg = unit.pan * kDegPerRad;
+        f.tilt_deg = unit.tilt * kDegPerRad;
+        f.pan_rate_deg_s = unit.pan_rate * kDegPerRad;
+        f.tilt_rate_deg_s = unit.tilt_rate * kDegPerRad;
         f.telemetry = observer_.last;
         f.truth = view_->truth;
         f.truth_px = view_->truth.visible_fraction > 0.5 ? view_->truth.mask_centroid_px : view_->truth.centre_px;
@@ -205,7 +200,7 @@ private:
     std::unique_ptr<sim::SimCamera> camera_;
     std::unique_ptr<sim::SimView> view_ = std::make_unique<sim::SimView>();
     std::unique_ptr<CapturedFrame> captured_ = std::make_unique<CapturedFrame>();
-    std::vector<ptu::PtuState> units_;  // the unit at every frame, for the camera's latency
+    sim::ExposureDelay delay_{config_.sim.latency_frames, config_.sim.fps, config_.sim.stamp_exposure};
     LoopChannels channels_;
     ServiceNotifier notifier_;
     LastFrame observer_;

@@ -16,6 +16,7 @@
 #include "drivers/ptu_limiter.hpp"
 #include "io/overlay.hpp"
 #include "io/png_writer.hpp"
+#include "sim/exposure_delay.hpp"
 #include "soak_clock.hpp"
 
 namespace rays::soak {
@@ -80,28 +81,21 @@ std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
     auto captured = std::make_unique<daemon::CapturedFrame>();
     std::vector<SoakFrame> frames;
     frames.reserve(static_cast<std::size_t>(run.frames));
-    std::vector<ptu::PtuState> poses;  // the unit at every frame, for the camera's latency
-    poses.reserve(static_cast<std::size_t>(run.frames));
+    sim::ExposureDelay delay(config.sim.latency_frames, config.sim.fps, config.sim.stamp_exposure);
     for (long k = 0; k < run.frames; ++k) {
         const double t = static_cast<double>(k) / config.sim.fps;
         clock.set(origin + std::chrono::duration_cast<TimePoint::duration>(Seconds(t)));
-        ptu::PtuState unit;
-        calibrated.read(unit, clock.now());
-        poses.push_back(unit);
+        ptu::PtuState state;
+        calibrated.read(state, clock.now());
         // With camera latency the picture (and its truth) is the one exposed latency_frames ago.
-        const long shown = std::max(0L, k - config.sim.latency_frames);
-        unit = poses[static_cast<std::size_t>(shown)];
-        const double pan = unit.axes[0].position_rad, tilt = unit.axes[1].position_rad;
-        sim_camera->render(static_cast<double>(shown) / config.sim.fps, pan + pan0, tilt + tilt0, *view);
+        const sim::ExposureDelay::Exposure exposure = delay.deliver(k, control::UnitPose::of(state, t));
+        const control::UnitPose& unit = exposure.unit;
+        sim_camera->render(exposure.t_s, unit.pan + pan0, unit.tilt + tilt0, *view);
         captured->image = view->image;
         captured->index = k;
-        // Arrived now, after rendering (the simulator's own time is no part of the loop's latency);
-        // exposed (k - shown) frame periods before.
+        // Arrived now, after rendering (the simulator's own time is no part of the loop's latency).
         captured->arrived = clock.now();
-        captured->stamp = config.sim.stamp_exposure
-                              ? captured->arrived - std::chrono::duration_cast<TimePoint::duration>(
-                                                        Seconds(static_cast<double>(k - shown) / config.sim.fps))
-                              : captured->arrived;
+        captured->stamp = captured->arrived - delay.stamp_lead(k);
         channels.frames.push(*captured, true, std::chrono::milliseconds(0));
         if (k == 0 && run.start_at_truth)
             channels.commands.push(daemon::make_command(daemon::CommandKind::Track, view->truth.mask_centroid_px.x,
@@ -120,10 +114,10 @@ std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
         f.speed_deg_s = truth.speed_deg_s;
         f.speed_px_frame = truth.speed_px_per_s / config.sim.fps;
         f.latency_us = observer.last.latency_us;
-        f.pan_deg = pan * kDegPerRad;
-        f.tilt_deg = tilt * kDegPerRad;
-        f.pan_rate_deg_s = unit.axes[0].velocity_rad_s * kDegPerRad;
-        f.tilt_rate_deg_s = unit.axes[1].velocity_rad_s * kDegPerRad;
+        f.pan_deg = unit.pan * kDegPerRad;
+        f.tilt_deg = unit.tilt * kDegPerRad;
+        f.pan_rate_deg_s = unit.pan_rate * kDegPerRad;
+        f.tilt_rate_deg_s = unit.tilt_rate * kDegPerRad;
         f.target_az_deg = control::angle_difference(truth.target.azimuth, pan0) * kDegPerRad;
         f.target_el_deg = (truth.target.elevation - tilt0) * kDegPerRad;
         frames.push_back(f);

@@ -88,23 +88,38 @@ std::optional<nlohmann::json> run_once(const SoakRun& run, const SoakOptions& op
     return row;
 }
 
-// --compare: the proportional law at each gain, the predictive law, the greedy snake; one table.
-int compare(const SoakRun& run, const SoakOptions& options) {
-    nlohmann::json proportional = nlohmann::json::array();
+// One run per gain, the rest of `run` as it is; which gain kept the fastest target. `single`: the one
+// run whose plot and trace are written.
+struct Sweep {
+    nlohmann::json rows = nlohmann::json::array();
     double best_gain = 0, best_speed = -1;
-    SoakSummary summary;
-    for (double gain : options.compare_gains) {
-        SoakRun swept = run;
-        swept.config.control.law = "proportional";
-        swept.config.control.gain = gain;
-        std::optional<nlohmann::json> row = run_once(swept, options, false, summary);
-        if (!row) return 1;
-        proportional.push_back(*row);
-        if (summary.max_speed_deg_s > best_speed) {
-            best_speed = summary.max_speed_deg_s;
-            best_gain = gain;
+};
+
+std::optional<Sweep> sweep_gains(SoakRun run, const std::vector<double>& gains, const SoakOptions& options, bool single) {
+    Sweep sweep;
+    sweep.best_gain = gains.front();
+    for (double gain : gains) {
+        run.config.control.gain = gain;
+        SoakSummary summary;
+        std::optional<nlohmann::json> row = run_once(run, options, single, summary);
+        if (!row) return std::nullopt;
+        sweep.rows.push_back(*row);
+        if (summary.max_speed_deg_s > sweep.best_speed) {
+            sweep.best_speed = summary.max_speed_deg_s;
+            sweep.best_gain = gain;
         }
     }
+    return sweep;
+}
+
+// --compare: the proportional law at each gain, the predictive law, the greedy snake; one table.
+int compare(const SoakRun& run, const SoakOptions& options) {
+    SoakRun proportional_run = run;
+    proportional_run.config.control.law = "proportional";
+    const std::optional<Sweep> proportional = sweep_gains(proportional_run, options.compare_gains, options, false);
+    if (!proportional) return 1;
+    const double best_gain = proportional->best_gain, best_speed = proportional->best_speed;
+    SoakSummary summary;
     const SoakRun predictive_run = [&] {
         SoakRun r = run;
         r.config.control.law = "predictive";
@@ -121,7 +136,7 @@ int compare(const SoakRun& run, const SoakOptions& options) {
     const double law_ratio = predictive_speed / std::max(best_speed, 1e-9);
     const double method_ratio = predictive_speed / std::max(snake_speed, 1e-9);
     if (options.json) {
-        std::printf("%s\n", nlohmann::json{{"proportional", proportional},
+        std::printf("%s\n", nlohmann::json{{"proportional", proportional->rows},
                                            {"best_proportional_gain", best_gain},
                                            {"predictive", *predictive},
                                            {"snake", *snake},
@@ -183,23 +198,13 @@ int main(int argc, char** argv) {
 
     std::vector<double> gains = options.sweep_gains;
     if (gains.empty()) gains.push_back(run.config.control.gain);
-    nlohmann::json sweep = nlohmann::json::array();
-    double best_gain = gains.front(), best_speed = -1;
-    for (double gain : gains) {
-        run.config.control.gain = gain;
-        SoakSummary summary;
-        std::optional<nlohmann::json> row = run_once(run, options, gains.size() == 1, summary);
-        if (!row) return 1;
-        if (summary.max_speed_deg_s > best_speed) {
-            best_speed = summary.max_speed_deg_s;
-            best_gain = gain;
-        }
-        sweep.push_back(*row);
-    }
+    const std::optional<Sweep> sweep = sweep_gains(run, gains, options, gains.size() == 1);
+    if (!sweep) return 1;
     if (gains.size() > 1 && !options.json)
-        std::printf("best gain for the fastest target kept: %g/s (%.1f deg/s)\n", best_gain, best_speed);
+        std::printf("best gain for the fastest target kept: %g/s (%.1f deg/s)\n", sweep->best_gain, sweep->best_speed);
     if (options.json) {
-        nlohmann::json out = gains.size() == 1 ? sweep.front() : nlohmann::json{{"sweep", sweep}, {"best_gain", best_gain}};
+        nlohmann::json out = gains.size() == 1 ? sweep->rows.front()
+                                               : nlohmann::json{{"sweep", sweep->rows}, {"best_gain", sweep->best_gain}};
         std::printf("%s\n", out.dump().c_str());
     }
     return 0;

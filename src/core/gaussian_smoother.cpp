@@ -2,48 +2,71 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace rays {
+namespace {
+
+constexpr int n = kFrameSize;
+
+// The separable passes for a kernel of radius R known at compile time: each output pixel is
+// w0·p(x) + Σ_k w_k (p(x−k) + p(x+k)), summed in a register, which the compiler vectorises.
+template <int R>
+void smooth_radius(const float* kern, const GreyImage& in, FloatImage& horizontal, FloatImage& out) {
+    // Horizontal pass over a row padded with replicated edge pixels.
+    std::array<float, n + 2 * GaussianSmoother::kMaxRadius> padded;
+    for (int y = 0; y < n; ++y) {
+        const std::uint8_t* src = in.row(y);
+        for (int x = 0; x < n; ++x) padded[static_cast<std::size_t>(x + R)] = src[x];
+        for (int k = 0; k < R; ++k) {
+            padded[static_cast<std::size_t>(k)] = src[0];
+            padded[static_cast<std::size_t>(n + R + k)] = src[n - 1];
+        }
+        const float* p = padded.data() + R;
+        float* __restrict dst = horizontal.row(y);
+        for (int x = 0; x < n; ++x) {
+            float s = kern[0] * p[x];
+            for (int k = 1; k <= R; ++k) s += kern[k] * (p[x - k] + p[x + k]);
+            dst[x] = s;
+        }
+    }
+    // Vertical pass: whole rows at a time, rows beyond the border replicated.
+    for (int y = 0; y < n; ++y) {
+        std::array<const float*, 2 * R + 1> rows;
+        for (int k = -R; k <= R; ++k) rows[static_cast<std::size_t>(k + R)] = horizontal.row(std::clamp(y + k, 0, n - 1));
+        float* __restrict dst = out.row(y);
+        for (int x = 0; x < n; ++x) {
+            float s = kern[0] * rows[R][x];
+            for (int k = 1; k <= R; ++k) s += kern[k] * (rows[static_cast<std::size_t>(R - k)][x] + rows[static_cast<std::size_t>(R + k)][x]);
+            dst[x] = s;
+        }
+    }
+}
+
+using SmoothFn = void (*)(const float*, const GreyImage&, FloatImage&, FloatImage&);
+
+template <std::size_t... R>
+constexpr std::array<SmoothFn, sizeof...(R)> smooth_table(std::index_sequence<R...>) {
+    return {&smooth_radius<static_cast<int>(R)>...};
+}
+
+constexpr auto kSmoothByRadius = smooth_table(std::make_index_sequence<GaussianSmoother::kMaxRadius + 1>{});
+
+}  // namespace
 
 void GaussianSmoother::set_sigma(double sigma_px) {
     sigma_ = std::clamp(sigma_px, 0.0, kMaxRadius / 3.0);
     radius_ = sigma_ > 0.0 ? std::min(kMaxRadius, static_cast<int>(std::ceil(3.0 * sigma_))) : 0;
     double sum = 0.0;
-    for (int k = -radius_; k <= radius_; ++k) {
+    for (int k = -radius_; k <= radius_; ++k) sum += radius_ == 0 ? 1.0 : std::exp(-0.5 * k * k / (sigma_ * sigma_));
+    for (int k = 0; k <= radius_; ++k) {
         const double w = radius_ == 0 ? 1.0 : std::exp(-0.5 * k * k / (sigma_ * sigma_));
-        kernel_[static_cast<std::size_t>(k + radius_)] = static_cast<float>(w);
-        sum += w;
+        kernel_[static_cast<std::size_t>(k)] = static_cast<float>(w / sum);
     }
-    for (int k = 0; k <= 2 * radius_; ++k) kernel_[static_cast<std::size_t>(k)] /= static_cast<float>(sum);
 }
 
 void GaussianSmoother::smooth(const GreyImage& in, FloatImage& out) {
-    constexpr int n = kFrameSize;
-    const int r = radius_;
-    const float* kern = kernel_.data() + r;  // kern[-r..r]
-    // Horizontal pass over a row padded with replicated edge pixels, tap by tap so it vectorises.
-    std::array<float, kFrameSize + 2 * kMaxRadius> padded;
-    for (int y = 0; y < n; ++y) {
-        const std::uint8_t* src = in.row(y);
-        float* __restrict dst = horizontal_.row(y);
-        for (int x = -r; x < n + r; ++x) padded[static_cast<std::size_t>(x + r)] = static_cast<float>(src[std::clamp(x, 0, n - 1)]);
-        for (int x = 0; x < n; ++x) dst[x] = 0.0f;
-        for (int k = -r; k <= r; ++k) {
-            const float w = kern[k];
-            const float* __restrict p = padded.data() + r + k;
-            for (int x = 0; x < n; ++x) dst[x] += w * p[x];
-        }
-    }
-    // Vertical pass: whole rows at a time.
-    for (int y = 0; y < n; ++y) {
-        float* __restrict dst = out.row(y);
-        for (int x = 0; x < n; ++x) dst[x] = 0.0f;
-        for (int k = -r; k <= r; ++k) {
-            const float* __restrict src = horizontal_.row(std::clamp(y + k, 0, n - 1));
-            const float w = kern[k];
-            for (int x = 0; x < n; ++x) dst[x] += w * src[x];
-        }
-    }
+    kSmoothByRadius[static_cast<std::size_t>(radius_)](kernel_.data(), in, horizontal_, out);
 }
 
 }  // namespace rays

@@ -20,7 +20,7 @@ public:
 private:
     double sigma_ = 0.0;
     int radius_ = 0;
-    std::array<float, 2 * kMaxRadius + 1> kernel_{};
+    std::array<float, kMaxRadius + 1> kernel_{};  // w_0 … w_radius of the symmetric kernel
     FloatImage horizontal_;  // the horizontal pass, kept to avoid a per-frame buffer
 };
 

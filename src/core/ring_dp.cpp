@@ -7,8 +7,8 @@ namespace rays {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
-constexpr long kEnumerateLimit = 4096;
-constexpr int kMaxStatesFast = 256;  // states per node the chain's scratch holds (back pointers are bytes)  // rings with fewer joint states are solved by enumeration
+constexpr long kEnumerateLimit = 4096;  // rings with fewer joint states are solved by enumeration
+constexpr int kMaxStatesFast = 256;     // states per node the chain's scratch holds (back pointers are bytes)
 
 }  // namespace
 
@@ -65,7 +65,7 @@ double RingDp::enumerate(double alpha, double beta, int* states) {
     }
 }
 
-double RingDp::chain(double alpha, double beta, int first, bool closed, int a, int b, int* states) {
+double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, int* states) {
     const int m = nodes_, stride = max_states_;
     auto node = [&](int t) { return (first + t) % m; };
     auto pair_cost = [&](int i, float li, float lj) {  // eq. 9, α term between node i and the next
@@ -76,7 +76,7 @@ double RingDp::chain(double alpha, double beta, int first, bool closed, int a, i
     const int n0 = node(0), n1 = node(1);
     for (int p = 0; p < states_[n0]; ++p)
         for (int q = 0; q < states_[n1]; ++q)
-            value_[p * stride + q] = (closed && (p != a || q != b))
+            value_[p * stride + q] = (p != a || q != b)
                                          ? kInf
                                          : unary(n0, p) + unary(n1, q) + pair_cost(n0, lam(n0, p), lam(n1, q));
     for (int t = 1; t + 1 < m; ++t) {
@@ -115,15 +115,13 @@ double RingDp::chain(double alpha, double beta, int first, bool closed, int a, i
     int bp = 0, bq = 0;
     for (int p = 0; p < states_[nl]; ++p)
         for (int q = 0; q < states_[nq]; ++q) {
-            float v = value_[p * stride + q];
-            if (closed) {
-                const float l0 = lam(nl, p), l1 = lam(nq, q), la = lam(n0, a), lb = lam(n1, b);
-                const float d1 = (la - l1) / gap_[nq] - (l1 - l0) / gap_[nl];
-                const float d2 = (lb - la) / gap_[n0] - (la - l1) / gap_[nq];
-                v += static_cast<float>(beta) / (0.5f * (gap_[nl] + gap_[nq])) * d1 * d1 +
-                     pair_cost(nq, l1, la) +
-                     static_cast<float>(beta) / (0.5f * (gap_[nq] + gap_[n0])) * d2 * d2;
-            }
+            const float l0 = lam(nl, p), l1 = lam(nq, q), la = lam(n0, a), lb = lam(n1, b);
+            const float d1 = (la - l1) / gap_[nq] - (l1 - l0) / gap_[nl];
+            const float d2 = (lb - la) / gap_[n0] - (la - l1) / gap_[nq];
+            const float v = value_[p * stride + q] +
+                            static_cast<float>(beta) / (0.5f * (gap_[nl] + gap_[nq])) * d1 * d1 +
+                            pair_cost(nq, l1, la) +
+                            static_cast<float>(beta) / (0.5f * (gap_[nq] + gap_[n0])) * d2 * d2;
             if (v < best) {
                 best = v;
                 bp = p;
@@ -136,6 +134,38 @@ double RingDp::chain(double alpha, double beta, int first, bool closed, int a, i
         const unsigned char* back = &back_[static_cast<std::size_t>(t) * stride * stride];
         states[node(t - 2)] = back[states[node(t - 1)] * stride + states[node(t)]];
     }
+    return best;
+}
+
+double RingDp::open_first_order(double alpha, int* states) {
+    const int m = nodes_, stride = max_states_;
+    float* value = value_.data();  // V(s_t) for the chain so far
+    float* next = next_value_.data();
+    for (int s = 0; s < states_[0]; ++s) value[s] = unary(0, s);
+    for (int t = 1; t < m; ++t) {
+        const float a = static_cast<float>(alpha) / gap_[t - 1];
+        unsigned char* back = &back_[static_cast<std::size_t>(t) * stride];
+        for (int q = 0; q < states_[t]; ++q) {
+            const float lq = lam(t, q);
+            float best = kInf;
+            int arg = 0;
+            for (int p = 0; p < states_[t - 1]; ++p) {
+                const float d = lq - lam(t - 1, p);
+                const float v = value[p] + a * d * d;  // eq. 9, α term
+                if (v < best) {
+                    best = v;
+                    arg = p;
+                }
+            }
+            next[q] = best + unary(t, q);
+            back[q] = static_cast<unsigned char>(arg);
+        }
+        std::swap(value, next);
+    }
+    const int last = static_cast<int>(std::min_element(value, value + states_[m - 1]) - value);
+    const double best = value[last];
+    states[m - 1] = last;
+    for (int t = m - 1; t >= 1; --t) states[t - 1] = back_[static_cast<std::size_t>(t) * stride + states[t]];
     return best;
 }
 
@@ -160,16 +190,16 @@ double RingDp::solve(double alpha, double beta, int* states) {
     long joint = 1;
     for (int i = 0; i < m && joint <= kEnumerateLimit; ++i) joint *= states_[i];
     if (m < 4 || joint <= kEnumerateLimit) return enumerate(alpha, beta, states);
-    chain(alpha, beta, 0, false, 0, 0, states);  // pass 1: open chain
+    open_first_order(alpha, states);  // pass 1
     // Pass 2 closes the ring, cut at the smoothest link of pass 1's contour, so the fixed pair is not
     // a jump; when that changed the contour, pass 3 closes it again from pass 2's contour, cut
     // opposite. Each pass contains the previous answer: the energy never rises.
     const int cut = smoothest_link(alpha, states, 0, m - 1);
     std::copy(states, states + m, scratch_.begin());
-    chain(alpha, beta, cut, true, states[cut], states[(cut + 1) % m], states);
+    closed_chain(alpha, beta, cut, states[cut], states[(cut + 1) % m], states);
     if (!std::equal(states, states + m, scratch_.begin())) {  // closing moved the contour: once more
         const int other = (cut + m / 2) % m;
-        chain(alpha, beta, other, true, states[other], states[(other + 1) % m], states);
+        closed_chain(alpha, beta, other, states[other], states[(other + 1) % m], states);
     }
     return energy(alpha, beta, states);
 }

@@ -3,12 +3,13 @@
 // the discrete eq. 10 with eq. 9's first (α) and second (β) order terms, λ' = Δλ / Δφ.
 //
 // The ring is closed, never cut open for good. Small rings are solved exactly by enumeration.
-// Larger ones in three passes: (1) the chain 0…M−1 without the wrap-around terms, solved exactly;
-// (2) the ring cut at the link where pass 1's contour is smoothest, the two rays there fixed to
-// pass 1's states, solved exactly with every term including the wrap-around; (3) the same from
-// pass 2's states, cut opposite that cut, when pass 2 changed any state. Each closed pass contains
-// the previous answer, so the energy never rises. The result is a consistent closed contour; its distance from the true optimum is bounded by
-// tests/core/test_ring_dp.cpp against brute force.
+// Larger ones in three passes: (1) the open chain 0…M−1 with the unary and α terms only, solved
+// exactly in O(M·S²): it only has to find a good place to cut; (2) the ring cut at the link where
+// pass 1's contour is smoothest, the two rays there fixed to pass 1's states, solved exactly in
+// O(M·S³) with every term including the wrap-around; (3) the same from pass 2's states, cut opposite
+// that cut, when pass 2 changed any state. Each closed pass contains the previous answer, so the
+// energy never rises. The result is a consistent closed contour; its distance from the true optimum
+// is bounded by tests/core/test_ring_dp.cpp against brute force.
 #pragma once
 #include <vector>
 
@@ -30,10 +31,11 @@ public:
     double energy(double alpha, double beta, const int* states) const;
 
 private:
-    // Exact DP over the chain starting at node `first` and running round the ring for `len` nodes.
-    // With `closed`, the states of the first two nodes are fixed to (a, b) and the wrap-around terms
-    // back to them are included.
-    double chain(double alpha, double beta, int first, bool closed, int a, int b, int* states);
+    // Exact DP over the ring starting at node `first`, the states of the first two nodes fixed to
+    // (a, b), every term included (the wrap-around back to them too). O(M·S³).
+    double closed_chain(double alpha, double beta, int first, int a, int b, int* states);
+    // Exact DP over the open chain 0…M−1 with the unary and α terms only. O(M·S²).
+    double open_first_order(double alpha, int* states);
     double enumerate(double alpha, double beta, int* states);
     // The link i → i+1 (from ≤ i < to, taken round the ring) with the least α term under the states.
     int smoothest_link(double alpha, const int* states, int from, int to) const;

@@ -1,5 +1,5 @@
 // The ring DP of §2.4 against exhaustive search: exact on rings it enumerates, close to the optimum
-// (and never worse than the bound measured here) with the two-pass solution on larger rings.
+// (and never worse than the bound measured here) with the three-pass solution on larger rings.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -109,13 +109,14 @@ TEST_CASE("RingDp equals brute force on rings it enumerates", "[ring_dp]") {
 TEST_CASE("RingDp three-pass solution stays close to brute force on larger rings", "[ring_dp]") {
     // Rings with more than 4096 joint states take the three-pass path. Over 200 random rings (the
     // weights of kWeights in turn) the DP must find the exact optimum in at least 95%. Measured with
-    // this seed: exact in 195/200, worst relative excess (E_dp − E_opt)/|E_opt| 0.036 with moderate
-    // smoothness (α′ ≤ 1e-3, β′ ≤ 1e-5; the tracker runs at α′ ≈ 2e-4) and 0.082 with strong
-    // smoothness. (Running pass 3 always made it 200/200 but cost ~20 µs a frame; the earlier
-    // two-pass closure cut at the middle was 197/200 with a worst excess of 0.74.) The bounds below
-    // leave a small margin over the measurement.
+    // this seed: exact in 194/200, worst relative excess (E_dp − E_opt)/|E_opt| 0.036 with moderate
+    // smoothness (α′ ≤ 1e-3, β′ ≤ 1e-5; the tracker runs at α′ ≈ 2e-4, β′ ≈ 1e-8) and 0.183 with
+    // strong smoothness. Pass 1 leaves β out since it only picks the cut: with β in it (O(M·S³)
+    // instead of O(M·S²)) the figures were 195/200, 0.036 and 0.082. (Running pass 3 always made it
+    // 200/200 but cost ~20 µs a frame; the earlier two-pass closure cut at the middle was 197/200
+    // with a worst excess of 0.74.) The bounds below leave a small margin over the measurement.
     constexpr double kMaxExcessModerate = 0.05;
-    constexpr double kMaxExcessStrong = 0.1;
+    constexpr double kMaxExcessStrong = 0.2;
     std::mt19937 rng(77u);
     RingDp dp(kMaxNodes, kMaxStates);
     std::uniform_int_distribution<int> nodes(8, 10);
@@ -170,7 +171,7 @@ Ring wrap_ring(int nodes) {
 }  // namespace
 
 TEST_CASE("RingDp closes the ring: the wrap-around terms decide the end state", "[ring_dp]") {
-    // 5 nodes (32 joint states) are enumerated; 13 nodes (8192) take the two-pass path.
+    // 5 nodes (32 joint states) are enumerated; 13 nodes (8192) take the three-pass path.
     for (int nodes : {5, 13}) {
         const Ring ring = wrap_ring(nodes);
         const double alpha = 0.07 * ring.gap[0] / 100.0;
@@ -195,7 +196,7 @@ TEST_CASE("RingDp closes the ring: the wrap-around terms decide the end state", 
 TEST_CASE("RingDp without smoothness picks each node's cheapest state", "[ring_dp]") {
     std::mt19937 rng(5u);
     RingDp dp(kMaxNodes, kMaxStates);
-    for (int nodes : {3, 5, 7, 12, 16}) {  // enumerated and two-pass rings
+    for (int nodes : {3, 5, 7, 12, 16}) {  // enumerated and three-pass rings
         const Ring ring = random_ring(rng, nodes, 1, 4);
         load(dp, ring);
         std::vector<int> states(nodes, -1);

@@ -40,16 +40,15 @@ int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, flo
     if (s > 1e-9) reach = std::min(reach, (last - m.y) / s);
     if (s < -1e-9) reach = std::min(reach, -m.y / s);
     const int n = std::clamp(static_cast<int>(std::floor((reach - lambda_min_) / step_ + 1e-6)) + 1, 0, samples_);
-    const float mx = static_cast<float>(m.x), my = static_cast<float>(m.y);
     const float cx = static_cast<float>(c), sy = static_cast<float>(s);
-    // eq. 6: ρ_m(φ, λ) = f(x_m + λ cos φ, y_m + λ sin φ), bilinear.
+    // eq. 6: ρ_m(φ, λ) = f(x_m + λ cos φ, y_m + λ sin φ), bilinear. `reach` keeps every sample
+    // inside the image; the cell is clamped so that rounding at the far border cannot leave it.
+    float x = static_cast<float>(m.x) + lambda_min_ * cx, y = static_cast<float>(m.y) + lambda_min_ * sy;
+    const float dx = step_ * cx, dy = step_ * sy;
     prefix_[0] = prefix_sq_[0] = 0.0f;
-    for (int j = 0; j < n; ++j) {
-        const float lam = lambda_min_ + static_cast<float>(j) * step_;
-        const float x = std::clamp(mx + lam * cx, 0.0f, static_cast<float>(last));
-        const float y = std::clamp(my + lam * sy, 0.0f, static_cast<float>(last));
-        const int x0 = std::min(static_cast<int>(x), kFrameSize - 2);
-        const int y0 = std::min(static_cast<int>(y), kFrameSize - 2);
+    for (int j = 0; j < n; ++j, x += dx, y += dy) {
+        const int x0 = std::clamp(static_cast<int>(x), 0, kFrameSize - 2);
+        const int y0 = std::clamp(static_cast<int>(y), 0, kFrameSize - 2);
         const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
         const float* r0 = image.row(y0) + x0;
         const float* r1 = r0 + kFrameSize;

@@ -137,7 +137,7 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
     return best;
 }
 
-double RingDp::open_first_order(double alpha, int* states) {
+void RingDp::open_first_order(double alpha, int* states) {
     const int m = nodes_, stride = max_states_;
     float* value = value_.data();  // V(s_t) for the chain so far
     float* next = next_value_.data();
@@ -162,11 +162,8 @@ double RingDp::open_first_order(double alpha, int* states) {
         }
         std::swap(value, next);
     }
-    const int last = static_cast<int>(std::min_element(value, value + states_[m - 1]) - value);
-    const double best = value[last];
-    states[m - 1] = last;
+    states[m - 1] = static_cast<int>(std::min_element(value, value + states_[m - 1]) - value);
     for (int t = m - 1; t >= 1; --t) states[t - 1] = back_[static_cast<std::size_t>(t) * stride + states[t]];
-    return best;
 }
 
 int RingDp::smoothest_link(double alpha, const int* states, int from, int to) const {

@@ -34,8 +34,8 @@ private:
     // Exact DP over the ring starting at node `first`, the states of the first two nodes fixed to
     // (a, b), every term included (the wrap-around back to them too). O(M·S³).
     double closed_chain(double alpha, double beta, int first, int a, int b, int* states);
-    // Exact DP over the open chain 0…M−1 with the unary and α terms only. O(M·S²).
-    double open_first_order(double alpha, int* states);
+    // Exact DP over the open chain 0…M−1 with the unary and α terms only; writes its states. O(M·S²).
+    void open_first_order(double alpha, int* states);
     double enumerate(double alpha, double beta, int* states);
     // The link i → i+1 (from ≤ i < to, taken round the ring) with the least α term under the states.
     int smoothest_link(double alpha, const int* states, int from, int to) const;

@@ -57,12 +57,13 @@ constexpr auto kSmoothByRadius = smooth_table(std::make_index_sequence<GaussianS
 void GaussianSmoother::set_sigma(double sigma_px) {
     sigma_ = std::clamp(sigma_px, 0.0, kMaxRadius / 3.0);
     radius_ = sigma_ > 0.0 ? std::min(kMaxRadius, static_cast<int>(std::ceil(3.0 * sigma_))) : 0;
+    std::array<double, kMaxRadius + 1> w{};
     double sum = 0.0;
-    for (int k = -radius_; k <= radius_; ++k) sum += radius_ == 0 ? 1.0 : std::exp(-0.5 * k * k / (sigma_ * sigma_));
     for (int k = 0; k <= radius_; ++k) {
-        const double w = radius_ == 0 ? 1.0 : std::exp(-0.5 * k * k / (sigma_ * sigma_));
-        kernel_[static_cast<std::size_t>(k)] = static_cast<float>(w / sum);
+        w[static_cast<std::size_t>(k)] = radius_ == 0 ? 1.0 : std::exp(-0.5 * k * k / (sigma_ * sigma_));
+        sum += (k == 0 ? 1.0 : 2.0) * w[static_cast<std::size_t>(k)];  // w_k stands for taps −k and +k
     }
+    for (int k = 0; k <= radius_; ++k) kernel_[static_cast<std::size_t>(k)] = static_cast<float>(w[static_cast<std::size_t>(k)] / sum);
 }
 
 void GaussianSmoother::smooth(const GreyImage& in, FloatImage& out) {

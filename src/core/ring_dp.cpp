@@ -17,17 +17,22 @@ RingDp::RingDp(int max_nodes, int max_states)
       max_states_(max_states),
       lam_(static_cast<std::size_t>(max_nodes) * max_states),
       unary_(lam_.size()),
+      cap_(lam_.size()),
       gap_(max_nodes),
       states_(max_nodes),
+      jump_(kInf),
       value_(static_cast<std::size_t>(max_states) * max_states),
       next_value_(value_.size()),
       back_(static_cast<std::size_t>(max_nodes) * max_states * max_states),
       scratch_(max_nodes) {}
 
+void RingDp::set_jump_cost(double kappa) { jump_ = kappa > 0 ? static_cast<float>(kappa) : kInf; }
+
 void RingDp::reset(int nodes) { nodes_ = std::clamp(nodes, 0, max_nodes_); }
 
-void RingDp::set_node(int i, int states, const float* lam, const float* unary, float gap_to_next) {
+void RingDp::set_node(int i, int states, const float* lam, const float* unary, float gap_to_next, int capped) {
     states_[i] = states;
+    for (int s = 0; s < states; ++s) cap_[i * max_states_ + s] = s < capped ? jump_ : kInf;
     for (int s = 0; s < states; ++s) {
         lam_[i * max_states_ + s] = lam[s];
         unary_[i * max_states_ + s] = unary[s];
@@ -42,9 +47,11 @@ double RingDp::energy(double alpha, double beta, const int* states) const {
         const int prev = (i + m - 1) % m, next = (i + 1) % m;
         const double l0 = lam(prev, states[prev]), l1 = lam(i, states[i]), l2 = lam(next, states[next]);
         e += unary(i, states[i]);
-        e += alpha / gap_[i] * (l2 - l1) * (l2 - l1);                        // eq. 9, α|λ'|²
         const double d = (l2 - l1) / gap_[i] - (l1 - l0) / gap_[prev];
-        e += beta / (0.5 * (gap_[prev] + gap_[i])) * d * d;                  // eq. 9, β|λ''|²
+        const double ca = std::max(cap(i, states[i]), cap(next, states[next]));
+        const double cb = std::max<double>(ca, cap(prev, states[prev]));
+        e += std::min<double>(alpha / gap_[i] * (l2 - l1) * (l2 - l1), ca);    // eq. 9, α|λ'|², truncated
+        e += std::min<double>(beta / (0.5 * (gap_[prev] + gap_[i])) * d * d, cb);  // eq. 9, β|λ''|², truncated
     }
     return e;
 }
@@ -68,9 +75,10 @@ double RingDp::enumerate(double alpha, double beta, int* states) {
 double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, int* states) {
     const int m = nodes_, stride = max_states_;
     auto node = [&](int t) { return (first + t) % m; };
-    auto pair_cost = [&](int i, float li, float lj) {  // eq. 9, α term between node i and the next
-        const float d = lj - li;
-        return static_cast<float>(alpha) / gap_[i] * d * d;
+    auto pair_cost = [&](int i, int si, int sj) {  // eq. 9, α term between node i and the next
+        const int j = (i + 1) % m;
+        const float d = lam(j, sj) - lam(i, si);
+        return std::min(static_cast<float>(alpha) / gap_[i] * d * d, std::max(cap(i, si), cap(j, sj)));
     };
     // V(s0, s1) for the first link.
     const int n0 = node(0), n1 = node(1);
@@ -78,7 +86,7 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
         for (int q = 0; q < states_[n1]; ++q)
             value_[p * stride + q] = (p != a || q != b)
                                          ? kInf
-                                         : unary(n0, p) + unary(n1, q) + pair_cost(n0, lam(n0, p), lam(n1, q));
+                                         : unary(n0, p) + unary(n1, q) + pair_cost(n0, p, q);
     for (int t = 1; t + 1 < m; ++t) {
         const int prev = node(t - 1), cur = node(t), next = node(t + 1);
         const float gp = gap_[prev], gc = gap_[cur];
@@ -89,21 +97,23 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
         unsigned char* back = &back_[static_cast<std::size_t>(t + 1) * stride * stride];
         for (int q = 0; q < states_[cur]; ++q) {
             const float lq = lam(cur, q);
+            const float cq = cap(cur, q);
             for (int p = 0; p < np; ++p) slope_in[p] = (lq - lam(prev, p)) * inv_gp;
             for (int r = 0; r < states_[next]; ++r) {
                 const float lr = lam(next, r);
                 const float slope_out = (lr - lq) * inv_gc;
+                const float cqr = std::max(cq, cap(next, r));
                 float best = kInf;
                 int arg = 0;
                 for (int p = 0; p < np; ++p) {
                     const float d = slope_out - slope_in[p];
-                    const float v = value_[p * stride + q] + bw * d * d;  // eq. 9, β term
+                    const float v = value_[p * stride + q] + std::min(bw * d * d, std::max(cqr, cap(prev, p)));  // eq. 9, β term
                     if (v < best) {
                         best = v;
                         arg = p;
                     }
                 }
-                next_value_[q * stride + r] = best + aw * (lr - lq) * (lr - lq) + unary(next, r);
+                next_value_[q * stride + r] = best + std::min(aw * (lr - lq) * (lr - lq), cqr) + unary(next, r);
                 back[q * stride + r] = static_cast<unsigned char>(arg);
             }
         }
@@ -118,10 +128,12 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
             const float l0 = lam(nl, p), l1 = lam(nq, q), la = lam(n0, a), lb = lam(n1, b);
             const float d1 = (la - l1) / gap_[nq] - (l1 - l0) / gap_[nl];
             const float d2 = (lb - la) / gap_[n0] - (la - l1) / gap_[nq];
+            const float c1 = std::max({cap(nl, p), cap(nq, q), cap(n0, a)});
+            const float c2 = std::max({cap(nq, q), cap(n0, a), cap(n1, b)});
             const float v = value_[p * stride + q] +
-                            static_cast<float>(beta) / (0.5f * (gap_[nl] + gap_[nq])) * d1 * d1 +
-                            pair_cost(nq, l1, la) +
-                            static_cast<float>(beta) / (0.5f * (gap_[nq] + gap_[n0])) * d2 * d2;
+                            std::min(static_cast<float>(beta) / (0.5f * (gap_[nl] + gap_[nq])) * d1 * d1, c1) +
+                            pair_cost(nq, q, a) +
+                            std::min(static_cast<float>(beta) / (0.5f * (gap_[nq] + gap_[n0])) * d2 * d2, c2);
             if (v < best) {
                 best = v;
                 bp = p;
@@ -151,7 +163,7 @@ void RingDp::open_first_order(double alpha, int* states) {
             int arg = 0;
             for (int p = 0; p < states_[t - 1]; ++p) {
                 const float d = lq - lam(t - 1, p);
-                const float v = value[p] + a * d * d;  // eq. 9, α term
+                const float v = value[p] + std::min(a * d * d, std::max(cap(t, q), cap(t - 1, p)));  // eq. 9, α term
                 if (v < best) {
                     best = v;
                     arg = p;
@@ -172,7 +184,7 @@ int RingDp::smoothest_link(double alpha, const int* states, int from, int to) co
     for (int k = from; k < to; ++k) {
         const int i = k % nodes_, j = (k + 1) % nodes_;
         const double d = lam(j, states[j]) - lam(i, states[i]);
-        const double link = alpha / gap_[i] * d * d;
+        const double link = std::min<double>(alpha / gap_[i] * d * d, std::max(cap(i, states[i]), cap(j, states[j])));
         if (link < smoothest) {
             smoothest = link;
             best = i;

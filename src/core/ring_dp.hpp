@@ -1,6 +1,12 @@
 // Dynamic programming over the closed ring of rays (§2.4): one state per ray, minimising
 //   E = Σ_i U_i(s_i) + Σ_i a_i (λ_{i+1} − λ_i)² + Σ_i b_i (λ'_{i} − λ'_{i−1})²,
 // the discrete eq. 10 with eq. 9's first (α) and second (β) order terms, λ' = Δλ / Δφ.
+// Optionally each of those smoothness terms is truncated at a jump cost κ where every state it joins
+// is an edge: eq. 9 charges a step in λ without bound, so a thin protrusion (a leg, a head on a neck)
+// costs more at its two flanks than its rays can gain, however clear their edges are. Truncated, a
+// step between edges costs at most κ (a robust prior, as in Blake & Zisserman's weak string); steps
+// to or from a "no edge" state keep their full cost, so a stretch without edges still follows its
+// neighbours. κ = ∞ is eq. 9 exactly.
 //
 // The ring is closed, never cut open for good. Small rings are solved exactly by enumeration.
 // Larger ones in three passes: (1) the open chain 0…M−1 with the unary and α terms only, solved
@@ -21,7 +27,13 @@ public:
 
     void reset(int nodes);
     // lam and unary hold `states` values; gap is the angle (rad) to the next node round the ring.
-    void set_node(int i, int states, const float* lam, const float* unary, float gap_to_next);
+    // The first `capped` states are edges: a smoothness term between edge states only is truncated
+    // at the jump cost (set before the nodes); any term that involves another state is not.
+    void set_node(int i, int states, const float* lam, const float* unary, float gap_to_next, int capped = 0);
+
+    // κ: the most one smoothness term between edge states may charge (κ ≤ 0: never truncated).
+    // Applies to the nodes set after it.
+    void set_jump_cost(double kappa);
 
     // Minimises E for the given α', β' (already divided by the contour scale²). Writes one state per
     // node and returns the energy of that choice.
@@ -41,11 +53,13 @@ private:
     int smoothest_link(double alpha, const int* states, int from, int to) const;
     float lam(int node, int s) const { return lam_[node * max_states_ + s]; }
     float unary(int node, int s) const { return unary_[node * max_states_ + s]; }
+    float cap(int node, int s) const { return cap_[node * max_states_ + s]; }
 
     int max_nodes_, max_states_;
     int nodes_ = 0;
-    std::vector<float> lam_, unary_, gap_;
+    std::vector<float> lam_, unary_, cap_, gap_;
     std::vector<int> states_;
+    float jump_;
     std::vector<float> value_, next_value_;  // V(s_{i−1}, s_i), S² per step
     std::vector<unsigned char> back_;       // argmin s_{i−2} for each node and pair, M·S²
     std::vector<int> scratch_;

@@ -33,10 +33,13 @@ struct Ring {
     }
 };
 
-void load(RingDp& dp, const Ring& ring) {
+// `edge_states`: states below this count as edges for the jump cost (the tracker's last state per
+// ray is "no edge"); a negative value: all but the last.
+void load(RingDp& dp, const Ring& ring, int edge_states = 0) {
     dp.reset(ring.nodes);
     for (int i = 0; i < ring.nodes; ++i)
-        dp.set_node(i, ring.states[i], &ring.lam[i * kMaxStates], &ring.unary[i * kMaxStates], ring.gap[i]);
+        dp.set_node(i, ring.states[i], &ring.lam[i * kMaxStates], &ring.unary[i * kMaxStates], ring.gap[i],
+                    edge_states < 0 ? ring.states[i] - 1 : edge_states);
 }
 
 // Random λ in [5, 40] px, unary like a weighted −|∂ρ/∂λ|² in [−1, 0] (the last state, "no edge", 0.15),
@@ -93,15 +96,19 @@ TEST_CASE("RingDp equals brute force on rings it enumerates", "[ring_dp]") {
     while (cases < 120) {
         const Ring ring = random_ring(rng, nodes(rng), 1, 4);
         if (ring.joint() > kEnumerateLimit) continue;
-        load(dp, ring);
-        for (const Weights& w : kWeights) {
-            std::vector<int> states(ring.nodes, -1);
-            const double e = dp.solve(w.alpha, w.beta, states.data());
-            const double opt = brute_force(dp, ring, w.alpha, w.beta);
-            REQUIRE(e == Approx(opt).epsilon(1e-9).margin(1e-9));
-            for (int i = 0; i < ring.nodes; ++i) REQUIRE((states[i] >= 0 && states[i] < ring.states[i]));
-            REQUIRE(dp.energy(w.alpha, w.beta, states.data()) == Approx(e).epsilon(1e-9).margin(1e-9));
+        for (const double jump : {0.0, 0.05}) {  // eq. 9 whole, and truncated between edges
+            dp.set_jump_cost(jump);
+            load(dp, ring, -1);
+            for (const Weights& w : kWeights) {
+                std::vector<int> states(ring.nodes, -1);
+                const double e = dp.solve(w.alpha, w.beta, states.data());
+                const double opt = brute_force(dp, ring, w.alpha, w.beta);
+                REQUIRE(e == Approx(opt).epsilon(1e-9).margin(1e-9));
+                for (int i = 0; i < ring.nodes; ++i) REQUIRE((states[i] >= 0 && states[i] < ring.states[i]));
+                REQUIRE(dp.energy(w.alpha, w.beta, states.data()) == Approx(e).epsilon(1e-9).margin(1e-9));
+            }
         }
+        dp.set_jump_cost(0.0);
         ++cases;
     }
 }
@@ -236,4 +243,34 @@ TEST_CASE("RingDp does not keep a jump that pass 1 put at the middle of the ring
     }
     CHECK(best == Approx(0.0).margin(1e-9));
     CHECK(e == Approx(best).margin(1e-9));
+}
+
+TEST_CASE("RingDp with a jump cost lets a thin protrusion out that eq. 9 whole smooths away", "[ring_dp]") {
+    // 16 nodes, λ = 10 or 30. Nodes 3–4 (a leg) prefer λ = 30 by 1 each; all others prefer λ = 10 by 1.
+    // Untruncated, each flank of the leg costs α/gap·400 ≈ 10 at α = 0.01, far more than the leg's
+    // gain of 2 × 2; truncated at κ = 0.1, the α and β terms of both flanks cost at most 0.6 in all.
+    // Both states are edges here; were λ = 30 the "no edge" state, the cap would not apply.
+    constexpr int kNodes = kMaxNodes;
+    Ring r;
+    r.nodes = kNodes;
+    r.states.assign(kNodes, 2);
+    r.lam.assign(static_cast<std::size_t>(kNodes) * kMaxStates, 0.0f);
+    r.unary.assign(r.lam.size(), 0.0f);
+    r.gap.assign(kNodes, 2.0f * std::numbers::pi_v<float> / kNodes);
+    for (int i = 0; i < kNodes; ++i) {
+        const bool leg = i == 3 || i == 4;
+        r.lam[i * kMaxStates + 0] = 10.0f;
+        r.lam[i * kMaxStates + 1] = 30.0f;
+        r.unary[i * kMaxStates + 0] = leg ? 0.5f : -0.5f;
+        r.unary[i * kMaxStates + 1] = leg ? -0.5f : 0.5f;
+    }
+    RingDp dp(kMaxNodes, kMaxStates);
+    load(dp, r, 2);
+    std::vector<int> states(kNodes, -1);
+    dp.solve(0.01, 1e-6, states.data());
+    CHECK(std::count(states.begin(), states.end(), 1) == 0);
+    dp.set_jump_cost(0.1);
+    load(dp, r, 2);
+    dp.solve(0.01, 1e-6, states.data());
+    for (int i = 0; i < kNodes; ++i) CHECK(states[i] == (i == 3 || i == 4 ? 1 : 0));
 }

@@ -31,6 +31,9 @@ void add_rays(ParamTable<TrackerConfig>& table) {
              "sigma of the Gaussian pre-smoothing (0: none; the smoother reaches 8/3 px at most)")
         .add("alpha", &RaysTunables::alpha, "", 0, 10, "first-order smoothness weight of the contour (eq. 9)")
         .add("beta", &RaysTunables::beta, "", 0, 10, "second-order smoothness weight of the contour (eq. 9)")
+        .add("jump_cost", &RaysTunables::jump_cost, "", 0, 10,
+             "while tracking, the most one smoothness term between two edges charges, so a thin limb can step out "
+             "(0: never truncated)")
         .add("edge_floor", &RaysTunables::edge_floor, "grey/px", 0, 255,
              "an edge strength |d rho / d lambda| below this is noise")
         .add("none_cost", &RaysTunables::none_cost, "", 0, 10, "cost of the 'no edge on this ray' state")

@@ -11,6 +11,8 @@ constexpr float kTwoPi = 2.0f * std::numbers::pi_v<float>;
 constexpr float kDefaultContrast = 12.0f;  // grey/px: eq. 7's normaliser before a rim has been learned
 constexpr float kEdgeCap = 2.0f;           // an edge this many times the rim contrast² gains no more
 constexpr float kSpreadFloor = 6.0f;       // grey: the least spread the region term assumes
+constexpr float kContrastShare = 0.25f;    // of |outside − inside|: how far the inside may stray from the target's grey
+constexpr float kUnseenRegion = 1.0f;      // region term of an edge whose inside the ray could not see (of 0…5)
 constexpr float kCrossingTolerance = 0.15f;
 constexpr int kCheckEvery = 8;             // rays between deadline checks
 constexpr float kMinRadiusPx = 8.0f;       // least contour scale for the smoothness and temporal terms
@@ -74,9 +76,11 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
                        const TargetModel& model) {
     Hypothesis* hyp = &hyp_[static_cast<std::size_t>(ray) * capacity_.max_hypotheses];
     float end = 0;
-    // While tracking, the search reaches only as far beyond the expected contour as it can move.
-    const float limit = use_temporal ? kSearchScale * prior.lambda(ray) + kSearchMarginPx
-                                     : static_cast<float>(t_.lambda_max_px);
+    // While tracking, the search reaches only as far beyond the expected contour as it can move;
+    // where the previous contour found no edge, the contour may be anywhere along the ray (a limb
+    // coming back into view), so the whole ray is searched.
+    const float limit = use_temporal && !prior.open(ray) ? kSearchScale * prior.lambda(ray) + kSearchMarginPx
+                                                         : static_cast<float>(t_.lambda_max_px);
     const int n = profiler_.shoot(image, m, table_.cos_at(ray), table_.sin_at(ray), limit, hyp, end);
     hyp_count_[ray] = n;
     lambda_end_[ray] = end;
@@ -97,13 +101,19 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
             // (i) polarity: an edge of the sign opposite to the learned rim costs more.
             const float pol = model.polarity[bin];
             if (e.grad * pol < 0) c += static_cast<float>(t_.polarity_weight) * std::abs(pol);
-            // (ii) 1-D region term: inside like the target, the band outside unlike it.
+            // (ii) 1-D region term: inside like the target, the band outside unlike it. Where the ray
+            // saw little of the inside clear of the rim, the term tends to a middling value.
             const float mu = model.inside_mean[bin];
-            const float tau = model.inside_spread + kSpreadFloor;
+            // The tolerance grows with the contrast between the target and its background there: a thin
+            // part (a leg), blurred toward the background, still looks more like the target than not.
+            const float ob = model.outside_mean[bin];
+            const float tau = std::max(model.inside_spread + kSpreadFloor,
+                                       ob >= 0 ? kContrastShare * std::abs(ob - mu) : 0.0f);
             const float dev2 = std::max(0.0f, e.inside_msq - 2.0f * mu * e.inside_mean + mu * mu);
             float region = std::min(dev2 / (tau * tau), 4.0f);
             if (e.outside_mean >= 0) region += std::max(0.0f, 1.0f - std::abs(e.outside_mean - mu) / (2.0f * tau));
-            c += static_cast<float>(t_.region_weight) * region;
+            const float seen = inside_reliability(e.lambda);
+            c += static_cast<float>(t_.region_weight) * (seen * region + (1.0f - seen) * kUnseenRegion);
         }
         if (use_temporal) {
             // (iii) temporal coupling toward the previous contour, bounded so a real change can win.
@@ -124,6 +134,9 @@ void ActiveRays::solve(float radius, const PolarPrior& prior) {
     int nodes = 0;
     for (int r = 0; r < n; ++r)
         if (active_[r]) node_ray_[nodes++] = r;
+    // While tracking, a step in λ costs at most κ (ring_dp.hpp); a new target's first contour keeps
+    // eq. 9 whole, so that it starts as one smooth outline.
+    dp_.set_jump_cost(tracking_ ? t_.jump_cost : 0.0);
     dp_.reset(nodes);
     auto gap_after = [&](int j) {
         const int a = node_ray_[j], b = node_ray_[(j + 1) % nodes];
@@ -138,7 +151,7 @@ void ActiveRays::solve(float radius, const PolarPrior& prior) {
         const int states = hyp_count_[r] + 1;
         const float* cost = &cost_[static_cast<std::size_t>(r) * state_stride_];
         for (int s = 0; s < states; ++s) unary_[s] = cost[s] * weight;
-        dp_.set_node(j, states, &state_lambda_[static_cast<std::size_t>(r) * state_stride_], unary_.data(), gap);
+        dp_.set_node(j, states, &state_lambda_[static_cast<std::size_t>(r) * state_stride_], unary_.data(), gap, hyp_count_[r]);
         gap_before = gap;
     }
     const double scale = std::max(kMinRadiusPx, radius);  // λ measured in contour radii
@@ -233,6 +246,7 @@ void ActiveRays::extract(const FloatImage& image, Point m0, PolarPrior& prior, b
                          const TargetModel& model, const Clock& clock, TimePoint deadline, Contour& out,
                          int max_level) {
     const int n = table_.count();
+    tracking_ = use_temporal;
     rim_contrast_ = model.valid ? std::max(model.rim_contrast, 2.0f * static_cast<float>(t_.edge_floor))
                                 : kDefaultContrast;
     int centroid_level = 0;

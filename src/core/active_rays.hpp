@@ -43,6 +43,7 @@ private:
     RayProfiler profiler_;
     RingDp dp_;
     int state_stride_;                    // max_hypotheses + 1: the "no edge" state is last
+    bool tracking_ = false;               // this extraction follows a previous contour
     float rim_contrast_ = 0;              // normaliser of eq. 7 for this extraction
 
     std::vector<unsigned char> active_;   // per ray: shot at the current reference point

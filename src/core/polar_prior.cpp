@@ -6,9 +6,11 @@
 
 namespace rays {
 
-void PolarPrior::set_polygon(const Point* pts, int n) {
+void PolarPrior::set_polygon(const Point* pts, int n, const unsigned char* open) {
     n_ = std::min(n, static_cast<int>(points_.size()));
     std::copy(pts, pts + n_, points_.begin());
+    if (open) std::copy(open, open + n_, point_open_.begin());
+    else std::fill(point_open_.begin(), point_open_.begin() + n_, 0);
 }
 
 void PolarPrior::set_circle(double radius_px) {
@@ -22,6 +24,7 @@ void PolarPrior::resample(const RayTable& table, Point m, double lo, double hi) 
     if (n_ < 3) {
         const float r = static_cast<float>(std::clamp(circle_, lo, hi));
         std::fill(lambda_.begin(), lambda_.begin() + rays, r);
+        std::fill(open_.begin(), open_.begin() + rays, 0);
         mean_radius_ = r;
         return;
     }
@@ -40,8 +43,10 @@ void PolarPrior::resample(const RayTable& table, Point m, double lo, double hi) 
         const double phi = table.angle(i);
         while (k < n_ && unwrapped(k + 1) <= phi) ++k;
         // Edge from vertex k to k+1 (wrapping: before the first vertex the edge ends at it).
-        const Point a = points_[vertex(k == 0 && phi < angle_[first] ? n_ - 1 : k)];
-        const Point b = points_[vertex(k == 0 && phi < angle_[first] ? 0 : k + 1)];
+        const int va = vertex(k == 0 && phi < angle_[first] ? n_ - 1 : k);
+        const int vb = vertex(k == 0 && phi < angle_[first] ? 0 : k + 1);
+        const Point a = points_[va], b = points_[vb];
+        open_[i] = point_open_[va] | point_open_[vb];
         const double ux = table.cos_at(i), uy = table.sin_at(i);
         const double ex = b.x - a.x, ey = b.y - a.y;
         const double denom = ux * ey - uy * ex;

@@ -10,21 +10,26 @@ namespace rays {
 
 class PolarPrior {
 public:
-    explicit PolarPrior(int max_rays) : points_(max_rays), angle_(max_rays), lambda_(max_rays) {}
+    explicit PolarPrior(int max_rays)
+        : points_(max_rays), angle_(max_rays), lambda_(max_rays), point_open_(max_rays), open_(max_rays) {}
 
-    // A polygon ordered by angle round a point inside it (copied; no allocation).
-    void set_polygon(const Point* pts, int n);
+    // A polygon ordered by angle round a point inside it (copied; no allocation). `open` (optional)
+    // marks the points where that contour found no edge.
+    void set_polygon(const Point* pts, int n, const unsigned char* open = nullptr);
     void set_circle(double radius_px);
 
     // Fills λ_prior for every ray of the table as seen from m, clamped to [lo, hi].
     void resample(const RayTable& table, Point m, double lo, double hi);
     float lambda(int ray) const { return lambda_[ray]; }
+    // The ray crosses the polygon next to a point where it had no edge.
+    bool open(int ray) const { return open_[ray] != 0; }
     float mean_radius() const { return mean_radius_; }
 
 private:
     std::vector<Point> points_;
     std::vector<double> angle_;
     std::vector<float> lambda_;
+    std::vector<unsigned char> point_open_, open_;
     int n_ = 0;
     double circle_ = 10.0;
     float mean_radius_ = 10.0f;

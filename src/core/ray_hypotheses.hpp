@@ -1,6 +1,7 @@
 // One ray's 1-D search (§2.2, §2.4): sample the smoothed image along the ray (eq. 6), take the
 // derivative of the profile (eq. 7, 12) and keep up to K contour hypotheses (eq. 13).
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "core/image.hpp"
@@ -15,6 +16,10 @@ struct Hypothesis {
     float inside_msq = 0;   // mean of their squares (for the region term's spread)
     float outside_mean = -1;  // mean grey of a short band just outside the edge; < 0 when off the image
 };
+
+// How far a hypothesis's inside statistics describe the target: an edge within a few px of m has its
+// inside samples blurred into the rim by the smoothing, so they say little (0 at ≤ 3 px, 1 from 6 px).
+inline float inside_reliability(float lambda) { return std::clamp((lambda - 3.0f) / 3.0f, 0.0f, 1.0f); }
 
 class RayProfiler {
 public:

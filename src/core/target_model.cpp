@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/ray_hypotheses.hpp"
+
 namespace rays {
 namespace {
 
@@ -32,6 +34,7 @@ void TargetModel::seed(const FloatImage& image, Point m) {
     const float mean = sum / n;
     polarity.fill(0.0f);
     inside_mean.fill(mean);
+    outside_mean.fill(-1.0f);
     inside_spread = std::sqrt(std::max(0.0f, sq / n - mean * mean));
     rim_contrast = kSeedContrast;
     valid = true;
@@ -44,6 +47,7 @@ void TargetModel::follow_exposure(float mean) {
     const float gain = frame_mean > kDarkest ? mean / frame_mean : 1.0f;
     if (valid && mean > kDarkest && std::abs(gain - 1.0f) > kStep) {
         for (float& m : inside_mean) m *= gain;
+        for (float& m : outside_mean) m = m < 0 ? m : m * gain;
         inside_spread *= gain;
         rim_contrast *= gain;
     }
@@ -51,17 +55,25 @@ void TargetModel::follow_exposure(float mean) {
 }
 
 void TargetModel::learn(const Contour& contour, std::vector<float>& scratch) {
-    std::array<float, kBins> pol{}, mean{}, count{};
+    std::array<float, kBins> pol{}, edges_in{}, mean{}, weight{}, out{}, outs{};
     int edges = 0;
-    float spread = 0;
+    float spread = 0, weights = 0;
     for (int j = 0; j < contour.size; ++j) {
         const ContourPoint& c = contour.points[j];
         if (c.no_edge) continue;
         const int b = bin(c.phi);
         pol[b] += c.grad > 0 ? 1.0f : -1.0f;
-        mean[b] += c.inside_mean;
-        count[b] += 1.0f;
-        spread += c.inside_sd;
+        edges_in[b] += 1.0f;
+        // The inside looks are learned from the rays that saw the inside clear of the rim.
+        const float w = inside_reliability(c.lambda);
+        mean[b] += w * c.inside_mean;
+        if (c.outside_mean >= 0) {
+            out[b] += c.outside_mean;
+            outs[b] += 1.0f;
+        }
+        weight[b] += w;
+        spread += w * c.inside_sd;
+        weights += w;
         scratch[edges++] = std::abs(c.grad);
     }
     if (edges < 3) return;
@@ -72,17 +84,27 @@ void TargetModel::learn(const Contour& contour, std::vector<float>& scratch) {
         global_mean += mean[b];
         global_pol += pol[b];
     }
-    global_mean /= static_cast<float>(edges);
     global_pol /= static_cast<float>(edges);
+    constexpr float kLeastWeight = 0.5f;  // less than this says nothing of the inside: looks kept as they were
+    const bool looks = weights >= kLeastWeight;
+    global_mean = looks ? global_mean / weights : 0.0f;
     // Bins no ray fell into take the whole contour's values.
     const float rate = valid ? kRate : 1.0f;
     for (int b = 0; b < kBins; ++b) {
-        const float p = count[b] > 0 ? pol[b] / count[b] : global_pol;
-        const float m = count[b] > 0 ? mean[b] / count[b] : global_mean;
+        const float p = edges_in[b] > 0 ? pol[b] / edges_in[b] : global_pol;
         polarity[b] += rate * (p - polarity[b]);
+        // The band outside only where a ray saw it: the background differs round the target.
+        if (outs[b] > 0) {
+            const float o = out[b] / outs[b];
+            outside_mean[b] = outside_mean[b] < 0 || !valid ? o : outside_mean[b] + rate * (o - outside_mean[b]);
+        } else if (!valid) {
+            outside_mean[b] = -1.0f;
+        }
+        if (!looks) continue;
+        const float m = weight[b] > 0.1f ? mean[b] / weight[b] : global_mean;
         inside_mean[b] += rate * (m - inside_mean[b]);
     }
-    inside_spread += rate * (spread / static_cast<float>(edges) - inside_spread);
+    if (looks) inside_spread += rate * (spread / weights - inside_spread);
     rim_contrast += rate * (rim - rim_contrast);
     valid = true;
 }

@@ -14,6 +14,7 @@ struct TargetModel {
     bool valid = false;
     std::array<float, kBins> polarity{};     // mean sign of dρ/dλ at the rim, −1 … 1
     std::array<float, kBins> inside_mean{};  // grey level inside, looking along that direction
+    std::array<float, kBins> outside_mean{}; // grey level just outside the rim there (< 0: not seen yet)
     float inside_spread = 0;                 // typical grey deviation inside
     float rim_contrast = 0;                  // median |dρ/dλ| on the rim, grey/px
     float frame_mean = 0;                    // the frame's mean grey the grey levels above belong to

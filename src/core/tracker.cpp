@@ -27,6 +27,7 @@ Tracker::Tracker(const TrackerConfig& config, const Clock& clock)
       prior_(config.capacity.max_rays),
       contour_(config.capacity),
       last_points_(config.capacity.max_rays),
+      last_open_(config.capacity.max_rays),
       scratch_(config.capacity.max_rays) {
     set_tunables(config.tunables);
     detector_.reset(tunables_.detect);
@@ -74,7 +75,10 @@ void Tracker::remember_contour() {
     }
     whole_area_.update(tracked_area_);
     last_count_ = contour_.size;
-    for (int i = 0; i < last_count_; ++i) last_points_[i] = contour_.points[i].p;
+    for (int i = 0; i < last_count_; ++i) {
+        last_points_[i] = contour_.points[i].p;
+        last_open_[i] = contour_.points[i].no_edge;
+    }
 }
 
 Point Tracker::best_start(Point centre, double radius, TimePoint deadline) {
@@ -174,7 +178,7 @@ void Tracker::track(TimePoint deadline) {
         for (int i = 0; i < last_count_; ++i)
             last_points_[i] = {last_points_[i].x + step.x - applied.x, last_points_[i].y + step.y - applied.y};
         applied = step;
-        prior_.set_polygon(last_points_.data(), last_count_);
+        prior_.set_polygon(last_points_.data(), last_count_, last_open_.data());
         rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
         reason = attention_.check(contour_, predicted, tunables_.attention);
         if (!reason) break;

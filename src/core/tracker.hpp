@@ -62,6 +62,7 @@ private:
     Attention attention_;
     Contour contour_;
     std::vector<Point> last_points_;  // the previous contour, for the temporal prior
+    std::vector<unsigned char> last_open_;  // its points without an edge
     std::vector<float> scratch_;
     int last_count_ = 0;
     Point velocity_;

@@ -21,6 +21,7 @@ struct RaysTunables {
     double sigma_px = 1.0;         // rays.sigma_px: Gaussian pre-smoothing
     double alpha = 0.02;           // rays.alpha: first-order smoothness (eq. 9)
     double beta = 1e-6;           // rays.beta: second-order smoothness (eq. 9)
+    double jump_cost = 0.002;      // rays.jump_cost: most one smoothness term between edges charges while tracking (0: never truncated)
     double edge_floor = 2.0;       // rays.edge_floor: |dρ/dλ| below this (grey/px) is noise
     double none_cost = 0.15;       // rays.none_cost: cost of the "no edge on this ray" state
     double polarity_weight = 0.6;  // rays.polarity_weight: extra cost of an edge of the wrong sign

@@ -333,6 +333,7 @@ RaysTunables only(double polarity, double region, double temporal) {
     t.polarity_weight = polarity;
     t.region_weight = region;
     t.temporal_weight = temporal;
+    t.jump_cost = 0.0;  // each term alone, under eq. 9's untruncated smoothness
     return t;
 }
 

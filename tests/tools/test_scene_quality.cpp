@@ -17,10 +17,11 @@ struct Score {
     int tracking = 0;
 };
 
-Score run_scene(const char* name, int lost_check_from = -1, int lost_check_to = -1, int* losses_in_window = nullptr) {
+Score run_scene(const char* name, int lost_check_from = -1, int lost_check_to = -1, int* losses_in_window = nullptr,
+                const TrackerConfig& config = {}) {
     auto scene = scenes::make_scene(name);
     SteadyClock clock;
-    Tracker tracker(TrackerConfig{}, clock);
+    Tracker tracker(config, clock);
     scenes::SceneFrame f;
     Score s;
     double sum = 0;
@@ -51,10 +52,25 @@ TEST_CASE("Easy scenes: mean IoU at least 0.85", "[quality]") {
     CHECK(run_scene("noise-blur").mean_iou >= 0.85);
 }
 
-TEST_CASE("Hard scenes that the tracker handles: mean IoU at least 0.6", "[quality]") {
+TEST_CASE("Hard scenes: mean IoU at least 0.6", "[quality]") {
+    CHECK(run_scene("weak-contrast").mean_iou >= 0.6);
     CHECK(run_scene("shadow").mean_iou >= 0.6);
     CHECK(run_scene("occluder").mean_iou >= 0.6);
     CHECK(run_scene("speed-ramp").mean_iou >= 0.6);
+    CHECK(run_scene("walker-pole").mean_iou >= 0.6);
+    CHECK(run_scene("approach").mean_iou >= 0.6);
+}
+
+TEST_CASE("The jump cost lets a walker's legs and head into the contour", "[quality]") {
+    // Eq. 9 whole charges the flanks of a thin leg more than its rays gain, so the contour keeps to
+    // the torso; truncated between edges (rays.jump_cost) the legs come in. Measured: 0.477 → 0.743.
+    TrackerConfig whole;
+    whole.tunables.rays.jump_cost = 0.0;
+    const double without = run_scene("walker-pole", -1, -1, nullptr, whole).mean_iou;
+    const double with = run_scene("walker-pole").mean_iou;
+    INFO("walker-pole mean IoU without the jump cost " << without << ", with " << with);
+    CHECK(with >= 0.6);
+    CHECK(with >= without + 0.15);
 }
 
 TEST_CASE("A target moving 8 px/frame is kept without a loss", "[quality]") {

@@ -134,9 +134,9 @@ void ActiveRays::solve(float radius, const PolarPrior& prior) {
     int nodes = 0;
     for (int r = 0; r < n; ++r)
         if (active_[r]) node_ray_[nodes++] = r;
-    // While tracking, a step in λ costs at most κ (ring_dp.hpp); a new target's first contour keeps
-    // eq. 9 whole, so that it starts as one smooth outline.
-    dp_.set_jump_cost(tracking_ ? t_.jump_cost : 0.0);
+    // A tracking extraction's final contour: a step in λ between edges costs at most κ (ring_dp.hpp).
+    // A new target's first contour and the coarse contours m converges on keep eq. 9 whole.
+    dp_.set_jump_cost(jumps_ ? t_.jump_cost : 0.0);
     dp_.reset(nodes);
     auto gap_after = [&](int j) {
         const int a = node_ray_[j], b = node_ray_[(j + 1) % nodes];
@@ -246,7 +246,7 @@ void ActiveRays::extract(const FloatImage& image, Point m0, PolarPrior& prior, b
                          const TargetModel& model, const Clock& clock, TimePoint deadline, Contour& out,
                          int max_level) {
     const int n = table_.count();
-    tracking_ = use_temporal;
+    jumps_ = false;  // m converges on eq. 9 whole: a coarse ray's jump would pull it off the target
     rim_contrast_ = model.valid ? std::max(model.rim_contrast, 2.0f * static_cast<float>(t_.edge_floor))
                                 : kDefaultContrast;
     int centroid_level = 0;
@@ -322,6 +322,7 @@ void ActiveRays::extract(const FloatImage& image, Point m0, PolarPrior& prior, b
         if (!out.deadline_hit) levels = level + 1;
     }
     if (active > coarse_rays) {
+        jumps_ = use_temporal && allow_jumps_;
         solve(prior.mean_radius(), prior);
         write_contour(m, out);
     }

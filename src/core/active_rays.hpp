@@ -19,6 +19,8 @@ public:
     // Applies tunables within the capacities; false (and nothing changed) when they do not fit.
     bool configure(const RaysTunables& tunables);
     const RayTable& table() const { return table_; }
+    // Whether a tracking extraction's final contour may use rays.jump_cost (on by default).
+    void allow_jumps(bool allowed) { allow_jumps_ = allowed; }
 
     // Extracts the contour round m on the smoothed image. `prior` says where the contour is expected
     // (the previous frame's contour, or a circle); `use_temporal` enables the pull toward it; `model`
@@ -43,7 +45,8 @@ private:
     RayProfiler profiler_;
     RingDp dp_;
     int state_stride_;                    // max_hypotheses + 1: the "no edge" state is last
-    bool tracking_ = false;               // this extraction follows a previous contour
+    bool allow_jumps_ = true;             // see allow_jumps()
+    bool jumps_ = false;                  // the ring DP truncates its smoothness at the jump cost
     float rim_contrast_ = 0;              // normaliser of eq. 7 for this extraction
 
     std::vector<unsigned char> active_;   // per ray: shot at the current reference point

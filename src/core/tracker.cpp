@@ -181,6 +181,13 @@ void Tracker::track(TimePoint deadline) {
         prior_.set_polygon(last_points_.data(), last_count_, last_open_.data());
         rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
         reason = attention_.check(contour_, predicted, tunables_.attention);
+        if (reason && tunables_.rays.jump_cost > 0.0) {
+            // The jumps may have let part of the contour out onto clutter: the smooth contour instead.
+            rays_.allow_jumps(false);
+            rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
+            rays_.allow_jumps(true);
+            reason = attention_.check(contour_, predicted, tunables_.attention);
+        }
         if (!reason) break;
     }
     if (reason) {

@@ -32,10 +32,10 @@ void RingDp::reset(int nodes) { nodes_ = std::clamp(nodes, 0, max_nodes_); }
 
 void RingDp::set_node(int i, int states, const float* lam, const float* unary, float gap_to_next, int capped) {
     states_[i] = states;
-    for (int s = 0; s < states; ++s) cap_[i * max_states_ + s] = s < capped ? jump_ : kInf;
     for (int s = 0; s < states; ++s) {
         lam_[i * max_states_ + s] = lam[s];
         unary_[i * max_states_ + s] = unary[s];
+        cap_[i * max_states_ + s] = s < capped ? jump_ : kInf;
     }
     gap_[i] = gap_to_next;
 }

@@ -15,7 +15,7 @@
 // O(M·S³) with every term including the wrap-around; (3) the same from pass 2's states, cut opposite
 // that cut, when pass 2 changed any state. Each closed pass contains the previous answer, so the
 // energy never rises. The result is a consistent closed contour; its distance from the true optimum
-// is bounded by tests/core/test_ring_dp.cpp against brute force.
+// is bounded by tests/core/test_ring_dp.cpp against brute force, with and without the jump cost.
 #pragma once
 #include <vector>
 

@@ -96,7 +96,7 @@ void TargetModel::learn(const Contour& contour, std::vector<float>& scratch) {
         // The band outside only where a ray saw it: the background differs round the target.
         if (outs[b] > 0) {
             const float o = out[b] / outs[b];
-            outside_mean[b] = outside_mean[b] < 0 || !valid ? o : outside_mean[b] + rate * (o - outside_mean[b]);
+            outside_mean[b] = outside_mean[b] < 0 ? o : outside_mean[b] + rate * (o - outside_mean[b]);
         } else if (!valid) {
             outside_mean[b] = -1.0f;
         }

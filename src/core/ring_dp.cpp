@@ -17,9 +17,9 @@ RingDp::RingDp(int max_nodes, int max_states)
       max_states_(max_states),
       lam_(static_cast<std::size_t>(max_nodes) * max_states),
       unary_(lam_.size()),
-      cap_(lam_.size()),
       gap_(max_nodes),
       states_(max_nodes),
+      capped_(max_nodes),
       jump_(kInf),
       value_(static_cast<std::size_t>(max_states) * max_states),
       next_value_(value_.size()),
@@ -32,10 +32,10 @@ void RingDp::reset(int nodes) { nodes_ = std::clamp(nodes, 0, max_nodes_); }
 
 void RingDp::set_node(int i, int states, const float* lam, const float* unary, float gap_to_next, int capped) {
     states_[i] = states;
+    capped_[i] = capped;
     for (int s = 0; s < states; ++s) {
         lam_[i * max_states_ + s] = lam[s];
         unary_[i * max_states_ + s] = unary[s];
-        cap_[i * max_states_ + s] = s < capped ? jump_ : kInf;
     }
     gap_[i] = gap_to_next;
 }
@@ -94,6 +94,8 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
         const float inv_gp = 1.0f / gp, inv_gc = 1.0f / gc, aw = static_cast<float>(alpha) * inv_gc;
         const int np = states_[prev];
         float slope_in[kMaxStatesFast];  // (λ_cur,q − λ_prev,p) / gap for this q, per p
+        float cap_in[kMaxStatesFast];    // cap(prev, p), per p
+        for (int p = 0; p < np; ++p) cap_in[p] = cap(prev, p);
         unsigned char* back = &back_[static_cast<std::size_t>(t + 1) * stride * stride];
         for (int q = 0; q < states_[cur]; ++q) {
             const float lq = lam(cur, q);
@@ -107,7 +109,7 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
                 int arg = 0;
                 for (int p = 0; p < np; ++p) {
                     const float d = slope_out - slope_in[p];
-                    const float v = value_[p * stride + q] + std::min(bw * d * d, std::max(cqr, cap(prev, p)));  // eq. 9, β term
+                    const float v = value_[p * stride + q] + std::min(bw * d * d, std::max(cqr, cap_in[p]));  // eq. 9, β term
                     if (v < best) {
                         best = v;
                         arg = p;

@@ -17,6 +17,7 @@
 // energy never rises. The result is a consistent closed contour; its distance from the true optimum
 // is bounded by tests/core/test_ring_dp.cpp against brute force, with and without the jump cost.
 #pragma once
+#include <limits>
 #include <vector>
 
 namespace rays {
@@ -28,11 +29,10 @@ public:
     void reset(int nodes);
     // lam and unary hold `states` values; gap is the angle (rad) to the next node round the ring.
     // The first `capped` states are edges: a smoothness term between edge states only is truncated
-    // at the jump cost (set before the nodes); any term that involves another state is not.
+    // at the jump cost; any term that involves another state is not.
     void set_node(int i, int states, const float* lam, const float* unary, float gap_to_next, int capped = 0);
 
     // κ: the most one smoothness term between edge states may charge (κ ≤ 0: never truncated).
-    // Applies to the nodes set after it.
     void set_jump_cost(double kappa);
 
     // Minimises E for the given α', β' (already divided by the contour scale²). Writes one state per
@@ -53,12 +53,13 @@ private:
     int smoothest_link(double alpha, const int* states, int from, int to) const;
     float lam(int node, int s) const { return lam_[node * max_states_ + s]; }
     float unary(int node, int s) const { return unary_[node * max_states_ + s]; }
-    float cap(int node, int s) const { return cap_[node * max_states_ + s]; }
+    // The most a smoothness term may charge as far as state s of `node` is concerned.
+    float cap(int node, int s) const { return s < capped_[node] ? jump_ : std::numeric_limits<float>::infinity(); }
 
     int max_nodes_, max_states_;
     int nodes_ = 0;
-    std::vector<float> lam_, unary_, cap_, gap_;
-    std::vector<int> states_;
+    std::vector<float> lam_, unary_, gap_;
+    std::vector<int> states_, capped_;
     float jump_;
     std::vector<float> value_, next_value_;  // V(s_{i−1}, s_i), S² per step
     std::vector<unsigned char> back_;       // argmin s_{i−2} for each node and pair, M·S²

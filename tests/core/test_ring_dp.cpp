@@ -300,7 +300,6 @@ TEST_CASE("RingDp with a jump cost lets a thin protrusion out that eq. 9 whole s
     dp.solve(0.01, 1e-6, states.data());
     CHECK(std::count(states.begin(), states.end(), 1) == 0);
     dp.set_jump_cost(0.1);
-    load(dp, r, 2);
     dp.solve(0.01, 1e-6, states.data());
     for (int i = 0; i < kNodes; ++i) CHECK(states[i] == (i == 3 || i == 4 ? 1 : 0));
 }

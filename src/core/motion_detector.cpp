@@ -29,6 +29,8 @@ double next_threshold(double threshold, bool too_noisy, double highest_noisy, do
 }
 
 constexpr int kMergeGapPx = 6;  // regions this close to the largest belong to the same object
+constexpr int kCrescentAreaRatio = 3;   // two crescents of one object differ in area by less than this factor ...
+constexpr int kCrescentGapLengths = 5;  // ... and lie no more than this many half-lengths apart (the opening shortens them)
 
 constexpr double kNoiseFactor = 4.0;  // a change must stand this many noise σ above zero
 
@@ -64,6 +66,24 @@ double smoothed_difference(const GreyImage& previous, const GreyImage& current, 
 void threshold_difference(const Plane<float>& magnitude, double threshold, Mask& mask) {
     const float t = static_cast<float>(threshold);
     for (std::size_t i = 0; i < mask.px.size(); ++i) mask.px[i] = static_cast<std::uint8_t>(magnitude.px[i] > t);
+}
+
+// The leading and trailing crescents of one uniform object moving slowly are two thin regions with the
+// object between them, as far apart as the object is wide: side by side along one axis, overlapping by
+// most of their extent along the other, longer along it than across (by half at least), alike in
+// size, and not much further apart than they are long.
+template <class Region>
+bool facing(const Region& a, const Region& b) {
+    auto faces = [](int a0, int a1, int b0, int b1, int c0, int c1, int d0, int d1) {
+        const int overlap = std::min(a1, b1) - std::max(a0, b0) + 1;  // along the crescents
+        const int shorter = std::min(a1 - a0, b1 - b0) + 1, longer = std::max(a1 - a0, b1 - b0) + 1;
+        const int gap = std::max(c0 - d1, d0 - c1) - 1;                // across them
+        const bool thin = 2 * (a1 - a0 + 1) >= 3 * (c1 - c0 + 1) && 2 * (b1 - b0 + 1) >= 3 * (d1 - d0 + 1);
+        return thin && 2 * overlap >= longer && shorter * 2 >= longer && gap >= 0 && 2 * gap <= kCrescentGapLengths * shorter;
+    };
+    const bool alike = std::min(a.area, b.area) * kCrescentAreaRatio >= std::max(a.area, b.area);
+    return alike && (faces(a.y0, a.y1, b.y0, b.y1, a.x0, a.x1, b.x0, b.x1) ||
+                     faces(a.x0, a.x1, b.x0, b.x1, a.y0, a.y1, b.y0, b.y1));
 }
 
 // 3x3 square structuring element, applied separably (rows, then columns). Outside the frame the
@@ -154,7 +174,7 @@ Detection describe_largest(const std::array<Region, N>& regions, int described, 
             if (taken[static_cast<std::size_t>(i)]) continue;
             const bool near = r.x0 <= x1 + kMergeGapPx && r.x1 >= x0 - kMergeGapPx && r.y0 <= y1 + kMergeGapPx &&
                               r.y1 >= y0 - kMergeGapPx;
-            if (!near) continue;
+            if (!near && !facing(*largest, r)) continue;
             taken[static_cast<std::size_t>(i)] = grew = true;
             area += r.area;
             sum_x += r.sum_x;

@@ -151,6 +151,45 @@ TEST_CASE("The two crescents of a moving uniform disc are merged into one object
     CHECK(d.radius_px > 10.0);
 }
 
+TEST_CASE("The two edge strips of a wide uniform object are one object, however far apart", "[motion_detector]") {
+    // An upright uniform bar (a walker's body, 17 px wide) moving right by 2 px: only its leading and
+    // trailing edges change, two long strips 15 px apart, further than the merge gap. They face each
+    // other along their whole length, so they are the two sides of one object and m starts between
+    // them, on the bar, not on the background beside it.
+    GreyImage previous = blank(), current = blank();
+    for (int y = 30; y < 90; ++y)
+        for (int x = 0; x < 17; ++x) {
+            previous.at(50 + x, y) = 200;
+            current.at(52 + x, y) = 200;
+        }
+    add_noise(previous, 2.0, 7);
+    add_noise(current, 2.0, 8);
+
+    const DetectTunables tunables;
+    MotionDetector detector;
+    const Detection d = detector.detect(previous, current, tunables);
+
+    REQUIRE(d.found);
+    CHECK(d.regions == 2);
+    CHECK(distance(d.centre, 59.5, 59.5) < 2.0);  // the bar's middle between its two positions
+    CHECK(d.x0 <= 51);
+    CHECK(d.x1 >= 68);
+
+    SECTION("a strip beside a square is no pair: only the strip's own region") {
+        GreyImage square_current = current;
+        for (int y = 0; y < 60; ++y)  // the trailing strip stays; a square appears 10 px left of it
+            for (int x = 0; x < 60; ++x)
+                if (x >= 26 && x < 38 && y >= 50 && y < 62) square_current.at(x, y) = 200;
+        for (int y = 30; y < 90; ++y)  // no leading strip: the bar grows no further right
+            for (int x = 67; x < 69; ++x) square_current.at(x, y) = previous.at(x, y);
+        MotionDetector other;
+        const Detection e = other.detect(previous, square_current, tunables);
+        REQUIRE(e.found);
+        CHECK(e.regions == 2);
+        CHECK(e.x0 >= 45);  // the square (x < 38) not merged
+    }
+}
+
 TEST_CASE("Of two distant moving objects the larger is chosen", "[motion_detector]") {
     GreyImage previous = blank(), current = blank();
     draw_textured_disc(previous, 96, 90, 8, 11);

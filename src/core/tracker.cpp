@@ -17,6 +17,10 @@ constexpr double kReacquireAreaRatio = 0.3;       // its area within this factor
 constexpr double kReacquireSideShift = 0.6;       // of the target's radius: the points beside a hidden middle
 constexpr int kFreshReacquireFrames = 10;         // ... and only this soon after the loss (a target in passing
                                                   // behind something thin, not one that is gone)
+constexpr int kConfirmFrames = 20;       // a track started by detection is watched this many frames ...
+constexpr int kSettleFrames = 3;         // ... its contour settled after this many ...
+constexpr double kConfirmMovePx = 6.0;   // ... and it is the mover once it moved this far from there;
+constexpr int kMotionAwayFrames = 5;     // motion this often away from it (and twice as often as in it): not
 
 }  // namespace
 
@@ -203,6 +207,37 @@ void Tracker::track(TimePoint deadline) {
     remember_contour();
 }
 
+bool Tracker::confirm_new_track(const GreyImage& frame) {
+    // Frame differencing may start a track on the background beside the moving object: the part it
+    // just uncovered, or a patch that looks alike. Such a track stands still. For the first frames of a
+    // track that detection started, the detector goes on looking: a track that moves on from where its
+    // contour settled, or has the motion inside it, is kept; one that stays put while the motion is
+    // found away from it, frame after frame, is dropped, and detection starts again. Only while
+    // detection is allowed (a still camera): a turning camera moves everything in the image.
+    if (unconfirmed_frames_ < 0 || !has_previous_) return true;
+    const Point c = contour_.centroid;
+    if (++unconfirmed_frames_ == kSettleFrames) settled_at_ = c;
+    const bool moved = unconfirmed_frames_ > kSettleFrames &&
+                       std::hypot(c.x - settled_at_.x, c.y - settled_at_.y) >= kConfirmMovePx;
+    if (moved || unconfirmed_frames_ > kConfirmFrames) {
+        unconfirmed_frames_ = -1;
+        return true;
+    }
+    if (!detection_allowed_) return true;  // the camera is turning: the difference says nothing here
+    result_.detection = detector_.detect(previous_, frame, tunables_.detect);
+    const Detection& d = result_.detection;
+    if (!d.found) return true;
+    // In it: inside the contour, or as near its centroid as its equivalent radius (a faint mover's
+    // difference may show only where it was, just behind its rim).
+    const double reach = std::sqrt(std::max(contour_.area, 0.0) / std::numbers::pi);
+    if (contour_contains(contour_, d.centre) || std::hypot(d.centre.x - c.x, d.centre.y - c.y) <= reach) {
+        ++motion_inside_;
+        return true;
+    }
+    ++motion_outside_;
+    return motion_outside_ < kMotionAwayFrames || motion_outside_ <= 2 * motion_inside_;
+}
+
 const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) {
     ++result_.frame;
     result_.lost_reason = nullptr;
@@ -217,8 +252,15 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
 
     if (result_.state == TrackState::Tracking) {
         track(deadline);
+        if (result_.state == TrackState::Tracking && !confirm_new_track(frame)) {
+            result_.state = TrackState::Lost;
+            result_.has_contour = false;
+            result_.lost_reason = "the target detection found stood still while motion went on away from it";
+            lost_frames_ = 0;
+        }
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
+        unconfirmed_frames_ = -1;
         if (start_point_) {
             // Its whole size: the last contour may have been a sliver beside an occluder.
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
@@ -240,6 +282,10 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;
             if (d.found) found = begin_track(d.centre, d.radius_px, true, false, deadline);
+            if (found) {  // to be confirmed by its own motion (a start point from outside needs not be)
+                unconfirmed_frames_ = 0;
+                motion_inside_ = motion_outside_ = 0;
+            }
         }
         result_.state = found ? TrackState::Tracking : TrackState::Detecting;
         result_.has_contour = found;

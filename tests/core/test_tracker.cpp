@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/tracker.hpp"
@@ -177,4 +178,76 @@ TEST_CASE("Tracker follows a jump it was told to expect (predict_next)", "[track
         const bool kept = run.step(*s, 40) == TrackState::Tracking && run.iou() >= 0.8;
         CHECK(kept == told);
     }
+}
+
+namespace {
+
+// A still camera: a dark square that never moves (a 10×10 patch in it changes between frames 0 and 1,
+// so the first frame pair's motion is there), and a dark disc that stands until frame 3, then moves
+// right at 2 px/frame.
+void draw_square_and_mover(int index, rays::GreyImage& image) {
+    for (int y = 0; y < rays::kFrameSize; ++y)
+        for (int x = 0; x < rays::kFrameSize; ++x) {
+            std::uint8_t grey = 150;
+            if (std::abs(x - 32) <= 11 && std::abs(y - 32) <= 11) grey = index == 0 && std::abs(x - 32) <= 5 && std::abs(y - 32) <= 5 ? 110 : 60;
+            const double disc_x = 24.0 + 2.0 * std::max(0, index - 3);
+            if (std::hypot(x - disc_x, y - 92.0) <= 9.0) grey = 60;
+            image.at(x, y) = grey;
+        }
+}
+
+}  // namespace
+
+TEST_CASE("Tracker drops a track that detection started on something still while the mover goes on", "[tracker]") {
+    SteadyClock clock;
+    const TrackerConfig config;
+    Tracker tracker(config, clock);
+    rays::GreyImage image;
+    int i = 0;
+    for (; i < 3 && tracker.state() != TrackState::Tracking; ++i) {
+        draw_square_and_mover(i, image);
+        tracker.process(image, clock.now() + 50ms);
+    }
+    REQUIRE(tracker.state() == TrackState::Tracking);
+    const Point started = tracker.contour().centroid;
+    INFO("the track started at " << started.x << ", " << started.y);
+    REQUIRE(std::hypot(started.x - 32.0, started.y - 32.0) < 3.0);  // on the square: the flicker's motion was there
+    int dropped_at = -1;
+    for (; i < 40 && dropped_at < 0; ++i) {
+        draw_square_and_mover(i, image);
+        if (tracker.process(image, clock.now() + 50ms).state == TrackState::Lost) dropped_at = i;
+    }
+    INFO("dropped at frame " << dropped_at);
+    REQUIRE(dropped_at > 0);
+    CHECK(dropped_at <= 12);  // five frames of the disc's motion away from the square, after it settled
+    CHECK(std::string(tracker.result().lost_reason).find("stood still") != std::string::npos);
+    int on_mover = 0;
+    for (const int end = i + 15; i < end; ++i) {
+        draw_square_and_mover(i, image);
+        tracker.process(image, clock.now() + 50ms);
+        const Point c = tracker.contour().centroid;
+        const double disc_x = 24.0 + 2.0 * (i - 3);
+        if (tracker.state() == TrackState::Tracking && std::hypot(c.x - disc_x, c.y - 92.0) < 2.0) ++on_mover;
+    }
+    CHECK(on_mover >= 12);  // tracking the disc within a few frames, and kept
+}
+
+TEST_CASE("Tracker keeps a track that detection started on the mover", "[tracker]") {
+    // The same scene without the flicker: the first motion is the disc's, and its track stays.
+    SteadyClock clock;
+    const TrackerConfig config;
+    Tracker tracker(config, clock);
+    rays::GreyImage image;
+    int tracked = 0;
+    for (int i = 3; i < 40; ++i) {
+        draw_square_and_mover(i, image);
+        if (tracker.process(image, clock.now() + 50ms).state == TrackState::Tracking) {
+            const Point c = tracker.contour().centroid;
+            CHECK(std::hypot(c.x - (24.0 + 2.0 * (i - 3)), c.y - 92.0) < 2.0);
+            ++tracked;
+        } else {
+            CHECK(tracked == 0);  // never dropped once found
+        }
+    }
+    CHECK(tracked >= 35);
 }

@@ -13,7 +13,6 @@ constexpr float kEdgeCap = 2.0f;           // an edge this many times the rim co
 constexpr float kSpreadFloor = 6.0f;       // grey: the least spread the region term assumes
 constexpr float kContrastShare = 0.25f;    // of |outside − inside|: how far the inside may stray from the target's grey
 constexpr float kUnseenRegion = 1.0f;      // region term of an edge whose inside the ray could not see (of 0…5)
-constexpr float kOpenBandShare = 0.5f;     // of the region term's outside half, paid by "no edge" on an open ray (see shoot)
 constexpr float kCrossingTolerance = 0.15f;
 constexpr int kCheckEvery = 8;             // rays between deadline checks
 constexpr float kMinRadiusPx = 8.0f;       // least contour scale for the smoothness and temporal terms
@@ -92,16 +91,6 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
     const float lp = std::min(prior.lambda(ray), std::max(end, static_cast<float>(t_.lambda_min_px)));
     const float radius = std::max(kMinRadiusPx, prior.mean_radius());
     const int bin = TargetModel::bin(static_cast<float>(table_.angle(ray)));
-    // The target's learned grey looking this way, and how far the inside may stray from it: the
-    // tolerance grows with the contrast between the target and its background there, so a thin part
-    // (a leg), blurred toward the background, still looks more like the target than not.
-    const float mu = model.inside_mean[bin];
-    const float ob = model.outside_mean[bin];
-    const float tau = std::max(model.inside_spread + kSpreadFloor, ob >= 0 ? kContrastShare * std::abs(ob - mu) : 0.0f);
-    // The band outside λ should not look like the target (the outside half of the region term).
-    auto outside_alike = [&](float outside_mean) {
-        return outside_mean >= 0 ? std::max(0.0f, 1.0f - std::abs(outside_mean - mu) / (2.0f * tau)) : 0.0f;
-    };
     for (int h = 0; h < n; ++h) {
         const Hypothesis& e = hyp[h];
         // eq. 7 / 17: −|∂ρ/∂λ|², in units of the rim's own contrast and saturating, so a far
@@ -114,8 +103,15 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
             if (e.grad * pol < 0) c += static_cast<float>(t_.polarity_weight) * std::abs(pol);
             // (ii) 1-D region term: inside like the target, the band outside unlike it. Where the ray
             // saw little of the inside clear of the rim, the term tends to a middling value.
+            const float mu = model.inside_mean[bin];
+            // The tolerance grows with the contrast between the target and its background there: a thin
+            // part (a leg), blurred toward the background, still looks more like the target than not.
+            const float ob = model.outside_mean[bin];
+            const float tau = std::max(model.inside_spread + kSpreadFloor,
+                                       ob >= 0 ? kContrastShare * std::abs(ob - mu) : 0.0f);
             const float dev2 = std::max(0.0f, e.inside_msq - 2.0f * mu * e.inside_mean + mu * mu);
-            const float region = std::min(dev2 / (tau * tau), 4.0f) + outside_alike(e.outside_mean);
+            float region = std::min(dev2 / (tau * tau), 4.0f);
+            if (e.outside_mean >= 0) region += std::max(0.0f, 1.0f - std::abs(e.outside_mean - mu) / (2.0f * tau));
             const float seen = inside_reliability(e.lambda);
             c += static_cast<float>(t_.region_weight) * (seen * region + (1.0f - seen) * kUnseenRegion);
         }
@@ -127,14 +123,7 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
         cost[h] = c;
         lam[h] = e.lambda;
     }
-    // "No edge on this ray": held at the expected λ. Where the last contour had no edge either and the
-    // ray goes on looking like the target beyond that λ, the contour is not there (a limb the last
-    // contour cut off): the state pays part of the region term's outside half, so an edge further out
-    // can win.
-    cost[n] = static_cast<float>(t_.none_cost);
-    if (model.valid && use_temporal && prior.open(ray))
-        cost[n] += kOpenBandShare * static_cast<float>(t_.region_weight) * inside_reliability(lp) *
-                   outside_alike(profiler_.outside_mean_at(lp));
+    cost[n] = static_cast<float>(t_.none_cost);  // "no edge on this ray": held at the expected λ
     lam[n] = lp;
     // Until the DP has seen this ray, its cheapest state stands for it (orders the next level's rays).
     lambda_out_[ray] = lam[std::min_element(cost, cost + n + 1) - cost];

@@ -60,7 +60,6 @@ int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, flo
         prefix_sq_[j + 1] = prefix_sq_[j] + v * v;
     }
     lambda_end = lambda_min_ + static_cast<float>(std::max(0, n - 1)) * step_;
-    sampled_ = n;
     if (n < 3) return 0;
 
     // eq. 7/12: H = −|∂ρ/∂λ|², central differences; candidates are local maxima of |∂ρ/∂λ|.
@@ -76,7 +75,8 @@ int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, flo
     // hypotheses is kept as a minimum separation between them.
     std::sort(candidates_.begin(), candidates_.begin() + nc,
               [&](int a, int b) { return std::abs(grad_[a]) > std::abs(grad_[b]); });
-    const int margin = edge_margin();
+    const int margin = static_cast<int>(std::ceil(kEdgeMarginPx / step_));
+    const int band = std::max(1, static_cast<int>(std::lround(kOutsideBandPx / step_)));
     int kept = 0;
     for (int ci = 0; ci < nc && kept < k_; ++ci) {
         const int j = candidates_[ci];
@@ -97,21 +97,10 @@ int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, flo
         const auto inside = static_cast<float>(in_end - in_begin);
         hyp.inside_mean = (prefix_[in_end] - prefix_[in_begin]) / inside;
         hyp.inside_msq = (prefix_sq_[in_end] - prefix_sq_[in_begin]) / inside;
-        hyp.outside_mean = band_mean_after(j);
+        const int o0 = std::min(n, j + margin), o1 = std::min(n, j + margin + band);
+        hyp.outside_mean = o1 > o0 ? (prefix_[o1] - prefix_[o0]) / static_cast<float>(o1 - o0) : -1.0f;
     }
     return kept;
-}
-
-int RayProfiler::edge_margin() const { return static_cast<int>(std::ceil(kEdgeMarginPx / step_)); }
-
-float RayProfiler::band_mean_after(int j) const {
-    const int band = std::max(1, static_cast<int>(std::lround(kOutsideBandPx / step_)));
-    const int o0 = std::clamp(j + edge_margin(), 0, sampled_), o1 = std::clamp(j + edge_margin() + band, 0, sampled_);
-    return o1 > o0 ? (prefix_[o1] - prefix_[o0]) / static_cast<float>(o1 - o0) : -1.0f;
-}
-
-float RayProfiler::outside_mean_at(float lambda) const {
-    return band_mean_after(static_cast<int>(std::lround((lambda - lambda_min_) / step_)));
 }
 
 }  // namespace rays

@@ -34,17 +34,8 @@ public:
     int shoot(const FloatImage& image, Point m, double c, double s, float lambda_limit, Hypothesis* out,
               float& lambda_end);
 
-    // After shoot(): the mean grey of the band just outside λ, measured as for Hypothesis::outside_mean
-    // (< 0 when the ray did not reach it).
-    float outside_mean_at(float lambda) const;
-
 private:
-    int edge_margin() const;  // samples this close to an edge belong to neither side
-    // The mean grey of the band just outside sample j (< 0 when none of it was sampled).
-    float band_mean_after(int j) const;
-
     int samples_ = 0;
-    int sampled_ = 0;  // samples the last shoot() took
     int k_ = 0;
     float lambda_min_ = 0, step_ = 1, floor_ = 0, separation_ = 0;
     std::vector<float> profile_, grad_, prefix_, prefix_sq_;

@@ -151,7 +151,7 @@ TEST_CASE("The two crescents of a moving uniform disc are merged into one object
     CHECK(d.radius_px > 10.0);
 }
 
-TEST_CASE("The two edge strips of a wide uniform object are one object, however far apart", "[motion_detector]") {
+TEST_CASE("The two edge strips of a wide uniform object are one object beyond the merge gap", "[motion_detector]") {
     // An upright uniform bar (a walker's body, 17 px wide) moving right by 2 px: only its leading and
     // trailing edges change, two long strips 15 px apart, further than the merge gap. They face each
     // other along their whole length, so they are the two sides of one object and m starts between

@@ -195,16 +195,20 @@ void Tracker::track(TimePoint deadline) {
         if (!reason) break;
     }
     if (reason) {
-        result_.state = TrackState::Lost;
-        result_.has_contour = false;
-        result_.lost_reason = reason;
-        lost_frames_ = 0;
+        declare_lost(reason);
         return;
     }
     const Point moved{contour_.centroid.x - last.x, contour_.centroid.y - last.y};
     velocity_ = {velocity_.x + kVelocityRate * (moved.x - velocity_.x), velocity_.y + kVelocityRate * (moved.y - velocity_.y)};
     model_.learn(contour_, scratch_);
     remember_contour();
+}
+
+void Tracker::declare_lost(const char* reason) {
+    result_.state = TrackState::Lost;
+    result_.has_contour = false;
+    result_.lost_reason = reason;
+    lost_frames_ = 0;
 }
 
 bool Tracker::confirm_new_track(const GreyImage& frame) {
@@ -252,12 +256,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
 
     if (result_.state == TrackState::Tracking) {
         track(deadline);
-        if (result_.state == TrackState::Tracking && !confirm_new_track(frame)) {
-            result_.state = TrackState::Lost;
-            result_.has_contour = false;
-            result_.lost_reason = "the target detection found stood still while motion went on away from it";
-            lost_frames_ = 0;
-        }
+        if (result_.state == TrackState::Tracking && !confirm_new_track(frame))
+            declare_lost("the target detection found stood still while motion went on away from it");
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
         unconfirmed_frames_ = -1;

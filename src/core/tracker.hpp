@@ -49,6 +49,7 @@ private:
     // A track that detection started on something standing still beside the mover: false (see .cpp).
     bool confirm_new_track(const GreyImage& frame);
     void remember_contour();
+    void declare_lost(const char* reason);  // this frame's contour is not the target: lost, for `reason`
 
     const Clock& clock_;
     TrackerCapacity capacity_;

@@ -185,65 +185,65 @@ namespace {
 // A still camera: a dark square that never moves (a 10×10 patch in it changes between frames 0 and 1,
 // so the first frame pair's motion is there), and a dark disc that stands until frame 3, then moves
 // right at 2 px/frame.
-void draw_square_and_mover(int index, rays::GreyImage& image) {
-    for (int y = 0; y < rays::kFrameSize; ++y)
-        for (int x = 0; x < rays::kFrameSize; ++x) {
-            std::uint8_t grey = 150;
-            if (std::abs(x - 32) <= 11 && std::abs(y - 32) <= 11) grey = index == 0 && std::abs(x - 32) <= 5 && std::abs(y - 32) <= 5 ? 110 : 60;
-            const double disc_x = 24.0 + 2.0 * std::max(0, index - 3);
-            if (std::hypot(x - disc_x, y - 92.0) <= 9.0) grey = 60;
-            image.at(x, y) = grey;
-        }
-}
+constexpr double kMoverY = 92.0;
+double mover_x(int index) { return 24.0 + 2.0 * std::max(0, index - 3); }
+
+struct SquareAndMover {
+    SteadyClock clock;
+    Tracker tracker{TrackerConfig{}, clock};
+    rays::GreyImage image;
+
+    TrackState step(int index) {
+        for (int y = 0; y < rays::kFrameSize; ++y)
+            for (int x = 0; x < rays::kFrameSize; ++x) {
+                std::uint8_t grey = 150;
+                if (std::abs(x - 32) <= 11 && std::abs(y - 32) <= 11)
+                    grey = index == 0 && std::abs(x - 32) <= 5 && std::abs(y - 32) <= 5 ? 110 : 60;
+                if (std::hypot(x - mover_x(index), y - kMoverY) <= 9.0) grey = 60;
+                image.at(x, y) = grey;
+            }
+        return tracker.process(image, clock.now() + 50ms).state;
+    }
+
+    bool on_mover(int index) const {
+        const Point c = tracker.contour().centroid;
+        return tracker.state() == TrackState::Tracking && std::hypot(c.x - mover_x(index), c.y - kMoverY) < 2.0;
+    }
+};
 
 }  // namespace
 
 TEST_CASE("Tracker drops a track that detection started on something still while the mover goes on", "[tracker]") {
-    SteadyClock clock;
-    const TrackerConfig config;
-    Tracker tracker(config, clock);
-    rays::GreyImage image;
+    SquareAndMover run;
     int i = 0;
-    for (; i < 3 && tracker.state() != TrackState::Tracking; ++i) {
-        draw_square_and_mover(i, image);
-        tracker.process(image, clock.now() + 50ms);
+    while (i < 3 && run.step(i++) != TrackState::Tracking) {
     }
-    REQUIRE(tracker.state() == TrackState::Tracking);
-    const Point started = tracker.contour().centroid;
+    REQUIRE(run.tracker.state() == TrackState::Tracking);
+    const Point started = run.tracker.contour().centroid;
     INFO("the track started at " << started.x << ", " << started.y);
     REQUIRE(std::hypot(started.x - 32.0, started.y - 32.0) < 3.0);  // on the square: the flicker's motion was there
     int dropped_at = -1;
-    for (; i < 40 && dropped_at < 0; ++i) {
-        draw_square_and_mover(i, image);
-        if (tracker.process(image, clock.now() + 50ms).state == TrackState::Lost) dropped_at = i;
-    }
+    for (; i < 40 && dropped_at < 0; ++i)
+        if (run.step(i) == TrackState::Lost) dropped_at = i;
     INFO("dropped at frame " << dropped_at);
     REQUIRE(dropped_at > 0);
     CHECK(dropped_at <= 12);  // five frames of the disc's motion away from the square, after it settled
-    CHECK(std::string(tracker.result().lost_reason).find("stood still") != std::string::npos);
+    CHECK(std::string(run.tracker.result().lost_reason).find("stood still") != std::string::npos);
     int on_mover = 0;
     for (const int end = i + 15; i < end; ++i) {
-        draw_square_and_mover(i, image);
-        tracker.process(image, clock.now() + 50ms);
-        const Point c = tracker.contour().centroid;
-        const double disc_x = 24.0 + 2.0 * (i - 3);
-        if (tracker.state() == TrackState::Tracking && std::hypot(c.x - disc_x, c.y - 92.0) < 2.0) ++on_mover;
+        run.step(i);
+        if (run.on_mover(i)) ++on_mover;
     }
     CHECK(on_mover >= 12);  // tracking the disc within a few frames, and kept
 }
 
 TEST_CASE("Tracker keeps a track that detection started on the mover", "[tracker]") {
     // The same scene without the flicker: the first motion is the disc's, and its track stays.
-    SteadyClock clock;
-    const TrackerConfig config;
-    Tracker tracker(config, clock);
-    rays::GreyImage image;
+    SquareAndMover run;
     int tracked = 0;
     for (int i = 3; i < 40; ++i) {
-        draw_square_and_mover(i, image);
-        if (tracker.process(image, clock.now() + 50ms).state == TrackState::Tracking) {
-            const Point c = tracker.contour().centroid;
-            CHECK(std::hypot(c.x - (24.0 + 2.0 * (i - 3)), c.y - 92.0) < 2.0);
+        if (run.step(i) == TrackState::Tracking) {
+            CHECK(run.on_mover(i));
             ++tracked;
         } else {
             CHECK(tracked == 0);  // never dropped once found

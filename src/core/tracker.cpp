@@ -17,10 +17,11 @@ constexpr double kReacquireAreaRatio = 0.3;       // its area within this factor
 constexpr double kReacquireSideShift = 0.6;       // of the target's radius: the points beside a hidden middle
 constexpr int kFreshReacquireFrames = 10;         // ... and only this soon after the loss (a target in passing
                                                   // behind something thin, not one that is gone)
-constexpr int kConfirmFrames = 20;       // a track started by detection is watched this many frames ...
-constexpr int kSettleFrames = 3;         // ... its contour settled after this many ...
-constexpr double kConfirmMovePx = 6.0;   // ... and it is the mover once it moved this far from there;
-constexpr int kMotionAwayFrames = 5;     // motion this often away from it (and twice as often as in it): not
+constexpr double kStillRadiusPx = 6.0;   // a track whose centroid stays this near one point ...
+constexpr int kStillFrames = 8;          // ... this many frames stands still (slower than 0.75 px/frame);
+constexpr int kWatchWindowFrames = 20;   // while it does, the motion found in and away from it is counted
+constexpr int kMotionAwayFrames = 5;     // per this many frames: this often away (and twice as often as in
+                                         // it), and the track is not on the mover
 
 }  // namespace
 
@@ -211,23 +212,25 @@ void Tracker::declare_lost(const char* reason) {
     lost_frames_ = 0;
 }
 
-bool Tracker::confirm_new_track(const GreyImage& frame) {
-    // Frame differencing may start a track on the background beside the moving object: the part it
-    // just uncovered, or a patch that looks alike. Such a track stands still. For the first frames of a
-    // track that detection started, the detector goes on looking: a track that moves on from where its
-    // contour settled, or has the motion inside it, is kept; one that stays put while the motion is
-    // found away from it, frame after frame, is dropped, and detection starts again. Only while
-    // detection is allowed (a still camera): a turning camera moves everything in the image.
-    if (unconfirmed_frames_ < 0 || !has_previous_) return true;
+bool Tracker::watch_still_track(const GreyImage& frame) {
+    // Frame differencing may start a track on the background beside the moving object (the part it
+    // just uncovered, or a patch that looks alike), and a track may slide off a mover onto background
+    // that looks alike and stay there while the mover walks on. Such a track stands still. While a
+    // track stands still and the camera too, the detector goes on looking: motion found away from the
+    // contour frame after frame (and more often than in it) means the track is not on the mover; it is
+    // dropped, and detection starts again. Not while the camera turns: that moves everything.
+    if (!has_previous_) return true;
     const Point c = contour_.centroid;
-    if (++unconfirmed_frames_ == kSettleFrames) settled_at_ = c;
-    const bool moved = unconfirmed_frames_ > kSettleFrames &&
-                       std::hypot(c.x - settled_at_.x, c.y - settled_at_.y) >= kConfirmMovePx;
-    if (moved || unconfirmed_frames_ > kConfirmFrames) {
-        unconfirmed_frames_ = -1;
+    if (still_frames_ < 0 || std::hypot(c.x - still_at_.x, c.y - still_at_.y) >= kStillRadiusPx) {
+        watched_ = watched_ || still_frames_ >= 0;  // it moved: a mover from now on
+        still_at_ = c;
+        still_frames_ = 0;
+        motion_inside_ = motion_outside_ = 0;
         return true;
     }
-    if (!detection_allowed_) return true;  // the camera is turning: the difference says nothing here
+    if (++still_frames_ % kWatchWindowFrames == 0) motion_inside_ = motion_outside_ = 0;
+    // A start point from outside is the target, moving or not, until it has moved.
+    if (still_frames_ < kStillFrames || !watched_ || !detection_allowed_) return true;
     result_.detection = detector_.detect(previous_, frame, tunables_.detect);
     const Detection& d = result_.detection;
     if (!d.found) return true;
@@ -256,11 +259,12 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
 
     if (result_.state == TrackState::Tracking) {
         track(deadline);
-        if (result_.state == TrackState::Tracking && !confirm_new_track(frame))
-            declare_lost("the target detection found stood still while motion went on away from it");
+        if (result_.state == TrackState::Tracking && !watch_still_track(frame))
+            declare_lost("the track stood still while motion went on away from it");
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
-        unconfirmed_frames_ = -1;
+        still_frames_ = -1;
+        watched_ = !start_point_;
         if (start_point_) {
             // Its whole size: the last contour may have been a sliver beside an occluder.
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
@@ -282,10 +286,6 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;
             if (d.found) found = begin_track(d.centre, d.radius_px, true, false, deadline);
-            if (found) {  // to be confirmed by its own motion (a start point from outside needs not be)
-                unconfirmed_frames_ = 0;
-                motion_inside_ = motion_outside_ = 0;
-            }
         }
         result_.state = found ? TrackState::Tracking : TrackState::Detecting;
         result_.has_contour = found;

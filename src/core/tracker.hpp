@@ -46,8 +46,8 @@ private:
     bool begin_track(Point m, double radius, bool search, bool same_target, TimePoint deadline);
     bool reacquire_afresh(Point m, double radius, TimePoint deadline);
     void track(TimePoint deadline);
-    // A track that detection started on something standing still beside the mover: false (see .cpp).
-    bool confirm_new_track(const GreyImage& frame);
+    // A track standing still on something beside the mover: false (see .cpp).
+    bool watch_still_track(const GreyImage& frame);
     void remember_contour();
     void declare_lost(const char* reason);  // this frame's contour is not the target: lost, for `reason`
 
@@ -75,10 +75,11 @@ private:
     bool detection_allowed_ = true;
     int lost_frames_ = 0;
     int untracked_frames_ = 0;  // frames since the last one with a contour
-    int unconfirmed_frames_ = -1;  // frames since detection started the track, while unconfirmed (-1: confirmed)
-    int motion_inside_ = 0;        // of those, frames whose motion the detector found in the contour
-    int motion_outside_ = 0;       // ... and away from it
-    Point settled_at_;             // the contour's centroid once it settled
+    int still_frames_ = -1;   // frames the track has stood still near still_at_ (-1: a new track)
+    Point still_at_;          // where it stands
+    bool watched_ = true;     // detection started the track, or it has moved since its start point
+    int motion_inside_ = 0;   // of this window's still frames, those whose motion was found in the contour
+    int motion_outside_ = 0;  // ... and away from it
     double tracked_area_ = 0;   // area of the last contour accepted as the target
     WholeArea whole_area_;      // the target's size, for looking for it again after an occlusion
     double whole_grey_ = 0;     // its inside grey / the frame's mean grey while whole (running; 0: none yet)

@@ -81,7 +81,7 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
     // coming back into view), so the whole ray is searched.
     const float limit = use_temporal && !prior.open(ray) ? kSearchScale * prior.lambda(ray) + kSearchMarginPx
                                                          : static_cast<float>(t_.lambda_max_px);
-    const int n = profiler_.shoot(image, m, table_.cos_at(ray), table_.sin_at(ray), limit, hyp, end);
+    const int n = profiler_.shoot(image, foreground_, m, table_.cos_at(ray), table_.sin_at(ray), limit, hyp, end);
     hyp_count_[ray] = n;
     lambda_end_[ray] = end;
     active_[ray] = 1;
@@ -115,6 +115,9 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
             const float seen = inside_reliability(e.lambda);
             c += static_cast<float>(t_.region_weight) * (seen * region + (1.0f - seen) * kUnseenRegion);
         }
+        // (iv) where the still camera's background is known: an edge where the ray leaves the
+        // foreground costs less, one where it enters the foreground more.
+        c -= static_cast<float>(t_.foreground_weight) * e.foreground_step;
         if (use_temporal) {
             // (iii) temporal coupling toward the previous contour, bounded so a real change can win.
             const float d = (e.lambda - lp) / (0.2f * radius + 2.0f);

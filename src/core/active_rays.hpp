@@ -21,6 +21,8 @@ public:
     const RayTable& table() const { return table_; }
     // Whether a tracking extraction's final contour may use rays.jump_cost (on by default).
     void allow_jumps(bool allowed) { allow_jumps_ = allowed; }
+    // The still camera's foreground (BackgroundModel) for the extractions that follow; null: none.
+    void use_foreground(const FloatImage* foreground) { foreground_ = foreground; }
 
     // Extracts the contour round m on the smoothed image. `prior` says where the contour is expected
     // (the previous frame's contour, or a circle); `use_temporal` enables the pull toward it; `model`
@@ -47,6 +49,7 @@ private:
     int state_stride_;                    // max_hypotheses + 1: the "no edge" state is last
     bool allow_jumps_ = true;             // see allow_jumps()
     bool jumps_ = false;                  // the ring DP truncates its smoothness at the jump cost
+    const FloatImage* foreground_ = nullptr;  // see use_foreground()
     float rim_contrast_ = 0;              // normaliser of eq. 7 for this extraction
 
     std::vector<unsigned char> active_;   // per ray: shot at the current reference point

@@ -8,6 +8,8 @@ namespace {
 
 constexpr float kEdgeMarginPx = 1.0f;  // samples this close to an edge belong to neither side
 constexpr float kOutsideBandPx = 4.0f; // the band that should look like background
+constexpr float kForegroundReachPx = 2.0f;  // the foreground is read this far inside and outside an edge
+constexpr float kRimStep = 0.5f;            // an edge whose foreground drops this much is a rim
 
 }  // namespace
 
@@ -16,6 +18,8 @@ RayProfiler::RayProfiler(const TrackerCapacity& capacity)
       grad_(capacity.max_samples),
       prefix_(capacity.max_samples + 1),
       prefix_sq_(capacity.max_samples + 1),
+      foreground_step_(capacity.max_samples),
+      rank_(capacity.max_samples),
       candidates_(capacity.max_samples) {}
 
 bool RayProfiler::configure(const RaysTunables& t) {
@@ -30,8 +34,8 @@ bool RayProfiler::configure(const RaysTunables& t) {
     return true;
 }
 
-int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, float lambda_limit, Hypothesis* out,
-                       float& lambda_end) {
+int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Point m, double c, double s,
+                       float lambda_limit, Hypothesis* out, float& lambda_end) {
     constexpr double last = kFrameSize - 1;
     // The ray ends where it leaves the image: λ ≤ the distance to the border along (c, s).
     double reach = lambda_limit;
@@ -43,8 +47,9 @@ int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, flo
     const float cx = static_cast<float>(c), sy = static_cast<float>(s);
     // eq. 6: ρ_m(φ, λ) = f(x_m + λ cos φ, y_m + λ sin φ), bilinear. `reach` keeps every sample
     // inside the image; the cell is clamped so that rounding at the far border cannot leave it.
-    float x = static_cast<float>(m.x) + lambda_min_ * cx, y = static_cast<float>(m.y) + lambda_min_ * sy;
+    const float x_first = static_cast<float>(m.x) + lambda_min_ * cx, y_first = static_cast<float>(m.y) + lambda_min_ * sy;
     const float dx = step_ * cx, dy = step_ * sy;
+    float x = x_first, y = y_first;
     prefix_[0] = prefix_sq_[0] = 0.0f;
     for (int j = 0; j < n; ++j, x += dx, y += dy) {
         const int x0 = std::clamp(static_cast<int>(x), 0, kFrameSize - 2);
@@ -67,14 +72,34 @@ int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, flo
     int nc = 0;
     grad_[0] = grad_[n - 1] = 0.0f;
     for (int j = 1; j < n - 1; ++j) grad_[j] = (profile_[j + 1] - profile_[j - 1]) * inv2step;
+    // With a foreground: how much of it the ray leaves at sample j (read only at the candidates).
+    const int fg_reach = std::max(1, static_cast<int>(std::lround(kForegroundReachPx / step_)));
+    auto leaves_foreground = [&](int j) {
+        const auto at = [&](int k) {  // at the nearest pixel (inside the image, as sample k is)
+            const auto t = static_cast<float>(k);
+            return foreground->at(static_cast<int>(x_first + t * dx + 0.5f), static_cast<int>(y_first + t * dy + 0.5f));
+        };
+        return at(std::max(0, j - fg_reach)) - at(std::min(n - 1, j + fg_reach));
+    };
     for (int j = 1; j < n - 1; ++j) {
         const float a = std::abs(grad_[j]);
-        if (a >= floor_ && a >= std::abs(grad_[j - 1]) && a > std::abs(grad_[j + 1])) candidates_[nc++] = j;
+        if (a >= floor_ && a >= std::abs(grad_[j - 1]) && a > std::abs(grad_[j + 1])) {
+            foreground_step_[j] = foreground != nullptr ? leaves_foreground(j) : 0.0f;
+            rank_[j] = a * (1.0f + std::max(0.0f, foreground_step_[j]));
+            candidates_[nc++] = j;
+        }
     }
-    // eq. 13: hypotheses in order of decreasing |∂ρ/∂λ|²; eq. 15's wish for well-separated
-    // hypotheses is kept as a minimum separation between them.
-    std::sort(candidates_.begin(), candidates_.begin() + nc,
-              [&](int a, int b) { return std::abs(grad_[a]) > std::abs(grad_[b]); });
+    // eq. 13: hypotheses in order of decreasing |∂ρ/∂λ|² (an edge out of the foreground counting up
+    // to twice); eq. 15's wish for well-separated hypotheses is kept as a minimum separation between them.
+    std::sort(candidates_.begin(), candidates_.begin() + nc, [&](int a, int b) { return rank_[a] > rank_[b]; });
+    // The edge where the ray most clearly leaves the foreground is kept however weak it is: a target
+    // about as grey as its background has weak edges, and stronger ones of the background crowd it out.
+    int rim = -1;
+    for (int ci = 0; ci < nc; ++ci) {
+        const float step = foreground_step_[candidates_[ci]];
+        if (step >= kRimStep && (rim < 0 || step > foreground_step_[candidates_[rim]])) rim = ci;
+    }
+    if (rim > 0) std::rotate(candidates_.begin(), candidates_.begin() + rim, candidates_.begin() + rim + 1);
     const int margin = static_cast<int>(std::ceil(kEdgeMarginPx / step_));
     const int band = std::max(1, static_cast<int>(std::lround(kOutsideBandPx / step_)));
     int kept = 0;
@@ -90,6 +115,7 @@ int RayProfiler::shoot(const FloatImage& image, Point m, double c, double s, flo
         Hypothesis& hyp = out[kept++];
         hyp.lambda = lam;
         hyp.grad = grad_[j];
+        hyp.foreground_step = foreground_step_[j];
         // The inside: samples [in_end / 3, in_end), the outer two thirds of the way to the edge. Near m
         // the ray may start on something thin in front of the target (a pole across its middle),
         // and the part next to the rim is what tells the target's inside from the background.

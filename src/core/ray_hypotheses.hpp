@@ -15,6 +15,7 @@ struct Hypothesis {
     float inside_mean = 0;  // mean grey of the samples on the outer two thirds of the way from m to the edge
     float inside_msq = 0;   // mean of their squares (for the region term's spread)
     float outside_mean = -1;  // mean grey of a short band just outside the edge; < 0 when off the image
+    float foreground_step = 0;  // foreground just inside − just outside (−1 … 1; 0 without a background)
 };
 
 // How far a hypothesis's inside statistics describe the target: an edge within a few px of m has its
@@ -30,15 +31,16 @@ public:
 
     // Samples the ray from m in direction (c, s) with bilinear interpolation up to λ = lambda_limit
     // (and the image border) and writes at most K hypotheses, strongest first, into `out`.
-    // Returns how many. Also reports the last λ sampled.
-    int shoot(const FloatImage& image, Point m, double c, double s, float lambda_limit, Hypothesis* out,
-              float& lambda_end);
+    // Returns how many. Also reports the last λ sampled. With a `foreground` (BackgroundModel), an
+    // edge where the ray leaves it ranks as if up to twice as strong.
+    int shoot(const FloatImage& image, const FloatImage* foreground, Point m, double c, double s,
+              float lambda_limit, Hypothesis* out, float& lambda_end);
 
 private:
     int samples_ = 0;
     int k_ = 0;
     float lambda_min_ = 0, step_ = 1, floor_ = 0, separation_ = 0;
-    std::vector<float> profile_, grad_, prefix_, prefix_sq_;
+    std::vector<float> profile_, grad_, prefix_, prefix_sq_, foreground_step_, rank_;
     std::vector<int> candidates_;
 };
 

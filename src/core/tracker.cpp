@@ -1,6 +1,7 @@
 #include "core/tracker.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -250,9 +251,16 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
     result_.lost_reason = nullptr;
     result_.detection = {};
     smoother_.smooth(frame, smoothed_);
+    // The frame's mean grey, in eight running sums: one sum is a chain of 16384 dependent adds.
+    std::array<float, 8> sums{};
+    for (int i = 0; i < kFramePixels; i += 8)
+        for (int k = 0; k < 8; ++k) sums[k] += smoothed_.px[i + k];
     float sum = 0.0f;
-    for (float v : smoothed_.px) sum += v;
+    for (float s : sums) sum += s;
     model_.follow_exposure(sum / static_cast<float>(kFramePixels));
+    if (!detection_allowed_) background_.reset();  // a turning camera: what it had learned has moved
+    background_.rate(smoothed_);
+    rays_.use_foreground(background_.foreground());
 
     if (result_.state == TrackState::Lost && ++lost_frames_ >= tunables_.attention.lost_frames)
         result_.state = TrackState::Detecting;
@@ -292,6 +300,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
         result_.predicted = contour_.centroid;
     }
     untracked_frames_ = result_.has_contour ? 0 : untracked_frames_ + 1;
+    if (detection_allowed_) background_.learn(smoothed_, result_.has_contour ? &contour_ : nullptr);
     external_prediction_.reset();
     previous_ = frame;
     has_previous_ = true;

@@ -7,6 +7,7 @@
 
 #include "core/active_rays.hpp"
 #include "core/attention.hpp"
+#include "core/background_model.hpp"
 #include "core/clock.hpp"
 #include "core/contour_tracker.hpp"
 #include "core/gaussian_smoother.hpp"
@@ -59,6 +60,7 @@ private:
     GreyImage previous_;
     bool has_previous_ = false;
     MotionDetector detector_;
+    BackgroundModel background_;  // the still camera's background, for the rays' foreground term
     ActiveRays rays_;
     PolarPrior prior_;
     TargetModel model_;

@@ -29,6 +29,8 @@ constexpr std::array kCatalog{
           scripts::speed_ramp},
     Entry{"noise-blur", "a medium-contrast ellipse under blur and heavy noise (easy)", 300, 10, scripts::noise_blur},
     Entry{"approach", "a walker approaching the camera, growing from 25 to 75 px tall (hard)", 300, 11, scripts::approach},
+    Entry{"camouflage", "an ellipse 12 grey levels below a busy texture's mean, its rim weaker than the texture's edges (hard)",
+          300, 12, scripts::camouflage},
 };
 
 class ScriptedScene final : public Scene {

@@ -122,4 +122,14 @@ void approach(int t, Canvas& c, Random& r) {
     c.noise(4, r);
 }
 
+// A 13×10 ellipse 12 grey levels below the mean of a busy texture (±25 over 10 px cells) that is
+// darker than the target in places: its rim is weaker than the texture's own edges almost
+// everywhere. Along a loop at 1.1–1.8 px/frame.
+void camouflage(int t, Canvas& c, Random& r) {
+    c.texture(112, 25, 10, 12);
+    const Point p = Loop{64, 64, 30, 24, 0, 0.055, 0.3}.at(t);
+    c.paint(Ellipse{p.x, p.y, 13, 10, 0.4}, 100, true);
+    c.noise(3, r);
+}
+
 }  // namespace rays::scenes::scripts

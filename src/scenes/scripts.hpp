@@ -18,5 +18,6 @@ void occluder(int t, Canvas& c, Random& r);
 void speed_ramp(int t, Canvas& c, Random& r);
 void noise_blur(int t, Canvas& c, Random& r);
 void approach(int t, Canvas& c, Random& r);
+void camouflage(int t, Canvas& c, Random& r);
 
 }  // namespace rays::scenes::scripts

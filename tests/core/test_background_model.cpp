@@ -38,73 +38,69 @@ double mean_foreground(const FloatImage& f, int x0, int y0, int x1, int y1) {
     return sum / ((x1 - x0 + 1) * (y1 - y0 + 1));
 }
 
+// A model and the frames it is shown.
+struct Rig {
+    Scene scene;
+    std::unique_ptr<FloatImage> frame = std::make_unique<FloatImage>();
+    BackgroundModel model;
+
+    // Rates the scene's frame with the square at (cx, cy) (half < 0: none); the foreground, or null.
+    const FloatImage* rate(double cx, double cy, double half, double offset) {
+        scene.render(*frame, cx, cy, half, offset);
+        model.rate(*frame);
+        return model.foreground();
+    }
+    void learn() { model.learn(*frame, nullptr); }
+    void show(double cx, double cy, double half, double offset) {
+        rate(cx, cy, half, offset);
+        learn();
+    }
+    void show_empty(int frames) {
+        for (int i = 0; i < frames; ++i) show(0, 0, -1, 0.0);
+    }
+};
+
 }  // namespace
 
 TEST_CASE("BackgroundModel has no foreground until it has learned a few frames, nor after a reset", "[background]") {
-    Scene scene;
-    auto frame = std::make_unique<FloatImage>();
-    BackgroundModel model;
+    Rig rig;
     int first = -1;
     for (int i = 0; i < 20 && first < 0; ++i) {
-        scene.render(*frame, 30, 30, 6, 0.0);
-        model.rate(*frame);
-        if (model.foreground() != nullptr) first = i;
-        model.learn(*frame, nullptr);
+        if (rig.rate(30, 30, 6, 0.0) != nullptr) first = i;
+        rig.learn();
     }
     CHECK(first >= 5);  // a few frames learned first
     REQUIRE(first > 0);
-    model.reset();
-    scene.render(*frame, 30, 30, 6, 0.0);
-    model.rate(*frame);
-    CHECK(model.foreground() == nullptr);
+    rig.model.reset();
+    CHECK(rig.rate(30, 30, 6, 0.0) == nullptr);
 }
 
 TEST_CASE("BackgroundModel shows a square only 12 grey off a textured background as foreground", "[background]") {
-    Scene scene;
-    auto frame = std::make_unique<FloatImage>();
-    BackgroundModel model;
-    for (int i = 0; i < 20; ++i) {  // the empty scene
-        scene.render(*frame, 0, 0, -1, 0.0);
-        model.rate(*frame);
-        model.learn(*frame, nullptr);
-    }
-    scene.render(*frame, 64, 64, 10, -12.0);
-    model.rate(*frame);
-    const FloatImage* f = model.foreground();
+    Rig rig;
+    rig.show_empty(20);
+    const FloatImage* f = rig.rate(64, 64, 10, -12.0);
     REQUIRE(f != nullptr);
-    CHECK(model.noise() < 2.0);
-    CHECK(mean_foreground(*f, 56, 56, 72, 72) > 0.8);   // inside, clear of the rim
-    CHECK(mean_foreground(*f, 0, 0, 127, 40) < 0.02);   // the background
+    CHECK(rig.model.noise() < 2.0);
+    CHECK(mean_foreground(*f, 56, 56, 72, 72) > 0.8);  // inside, clear of the rim
+    CHECK(mean_foreground(*f, 0, 0, 127, 40) < 0.02);  // the background
 }
 
 TEST_CASE("BackgroundModel keeps no trail of a mover, and learns one that stopped", "[background]") {
-    Scene scene;
-    auto frame = std::make_unique<FloatImage>();
-    BackgroundModel model;
-    for (int i = 0; i < 12; ++i) {
-        scene.render(*frame, 0, 0, -1, 0.0);
-        model.rate(*frame);
-        model.learn(*frame, nullptr);
-    }
+    Rig rig;
+    rig.show_empty(12);
     // A square crosses at 2 px/frame, no target box given (as before a track): where it was is
     // background again at once, the background under it never having been learned as the square.
-    for (int i = 0; i < 30; ++i) {
-        scene.render(*frame, 20 + 2 * i, 64, 8, -40.0);
-        model.rate(*frame);
-        model.learn(*frame, nullptr);
-    }
-    scene.render(*frame, 80, 64, 8, -40.0);
-    model.rate(*frame);
-    REQUIRE(model.foreground() != nullptr);
-    CHECK(mean_foreground(*model.foreground(), 14, 56, 62, 72) < 0.02);  // its path
-    CHECK(mean_foreground(*model.foreground(), 74, 58, 86, 70) > 0.9);   // where it is
+    for (int i = 0; i < 30; ++i) rig.show(20 + 2 * i, 64, 8, -40.0);
+    const FloatImage* f = rig.rate(80, 64, 8, -40.0);
+    REQUIRE(f != nullptr);
+    CHECK(mean_foreground(*f, 14, 56, 62, 72) < 0.02);  // its path
+    CHECK(mean_foreground(*f, 74, 58, 86, 70) > 0.9);   // where it is
     // It stops there: after a while it is background too.
     int gone = -1;
     for (int i = 0; i < 60 && gone < 0; ++i) {
-        scene.render(*frame, 80, 64, 8, -40.0);
-        model.rate(*frame);
-        if (model.foreground() != nullptr && mean_foreground(*model.foreground(), 74, 58, 86, 70) < 0.05) gone = i;
-        model.learn(*frame, nullptr);
+        f = rig.rate(80, 64, 8, -40.0);
+        if (f != nullptr && mean_foreground(*f, 74, 58, 86, 70) < 0.05) gone = i;
+        rig.learn();
     }
     INFO("learned after " << gone << " frames still");
     CHECK(gone >= 10);
@@ -112,18 +108,10 @@ TEST_CASE("BackgroundModel keeps no trail of a mover, and learns one that stoppe
 }
 
 TEST_CASE("BackgroundModel says nothing of a frame unlike its background", "[background]") {
-    Scene scene;
-    auto frame = std::make_unique<FloatImage>();
-    BackgroundModel model;
-    for (int i = 0; i < 12; ++i) {
-        scene.render(*frame, 0, 0, -1, 0.0);
-        model.rate(*frame);
-        model.learn(*frame, nullptr);
-    }
-    scene.render(*frame, 0, 0, -1, 0.0);
-    model.rate(*frame);
-    CHECK(model.foreground() != nullptr);
-    for (float& v : frame->px) v += 40.0f;  // a light switched on
-    model.rate(*frame);
-    CHECK(model.foreground() == nullptr);
+    Rig rig;
+    rig.show_empty(12);
+    CHECK(rig.rate(0, 0, -1, 0.0) != nullptr);
+    for (float& v : rig.frame->px) v += 40.0f;  // a light switched on
+    rig.model.rate(*rig.frame);
+    CHECK(rig.model.foreground() == nullptr);
 }

@@ -73,6 +73,16 @@ void draw_square(GreyImage& image, int x, int y, int side, std::uint8_t grey) {
 
 double distance(rays::Point p, double x, double y) { return std::hypot(p.x - x, p.y - y); }
 
+// Adds noise σ to both frames (seeds `seed` and `seed` + 1) and detects with a fresh detector at
+// the default tunables.
+Detection detect_with_noise(GreyImage& previous, GreyImage& current, double sigma, unsigned seed) {
+    add_noise(previous, sigma, seed);
+    add_noise(current, sigma, seed + 1);
+    const DetectTunables tunables;
+    MotionDetector detector;
+    return detector.detect(previous, current, tunables);
+}
+
 // σ of the 3×3-binomial-smoothed difference of two frames with independent pixel noise σ each:
 // the difference has σ·√2, the filter keeps a fraction Σw² ^½ = 0.375 of it.
 double smoothed_noise_sigma(double sigma) { return sigma * std::sqrt(2.0) * 0.375; }
@@ -112,12 +122,7 @@ TEST_CASE("A uniform disc moving by one pixel is found: its thin crescents survi
     GreyImage previous = blank(), current = blank();
     draw_uniform_disc(previous, 60, 64, 12, 200);
     draw_uniform_disc(current, 61, 64, 12, 200);
-    add_noise(previous, 2.0, 22);
-    add_noise(current, 2.0, 23);
-
-    const DetectTunables tunables;
-    MotionDetector detector;
-    const Detection d = detector.detect(previous, current, tunables);
+    const Detection d = detect_with_noise(previous, current, 2.0, 22);
 
     REQUIRE(d.found);
     CHECK(distance(d.centre, 60.5, 64.0) < 2.0);
@@ -135,12 +140,7 @@ TEST_CASE("The two crescents of a moving uniform disc are merged into one object
     GreyImage previous = blank(), current = blank();
     draw_uniform_disc(previous, 60, 64, 12, 200);
     draw_uniform_disc(current, 62, 64, 12, 200);
-    add_noise(previous, 2.0, 3);
-    add_noise(current, 2.0, 4);
-
-    const DetectTunables tunables;
-    MotionDetector detector;
-    const Detection d = detector.detect(previous, current, tunables);
+    const Detection d = detect_with_noise(previous, current, 2.0, 3);
 
     REQUIRE(d.found);
     CHECK(d.regions == 2);
@@ -162,12 +162,7 @@ TEST_CASE("The two edge strips of a wide uniform object are one object beyond th
             previous.at(50 + x, y) = 200;
             current.at(52 + x, y) = 200;
         }
-    add_noise(previous, 2.0, 7);
-    add_noise(current, 2.0, 8);
-
-    const DetectTunables tunables;
-    MotionDetector detector;
-    const Detection d = detector.detect(previous, current, tunables);
+    const Detection d = detect_with_noise(previous, current, 2.0, 7);
 
     REQUIRE(d.found);
     CHECK(d.regions == 2);
@@ -183,7 +178,7 @@ TEST_CASE("The two edge strips of a wide uniform object are one object beyond th
         for (int y = 30; y < 90; ++y)  // no leading strip: the bar grows no further right
             for (int x = 67; x < 69; ++x) square_current.at(x, y) = previous.at(x, y);
         MotionDetector other;
-        const Detection e = other.detect(previous, square_current, tunables);
+        const Detection e = other.detect(previous, square_current, DetectTunables{});
         REQUIRE(e.found);
         CHECK(e.regions == 2);
         CHECK(e.x0 >= 45);  // the square (x < 38) not merged
@@ -196,12 +191,7 @@ TEST_CASE("Of two distant moving objects the larger is chosen", "[motion_detecto
     draw_textured_disc(current, 96, 94, 8, 11);
     draw_textured_disc(previous, 38, 40, 16, 12);
     draw_textured_disc(current, 42, 40, 16, 12);
-    add_noise(previous, 2.0, 5);
-    add_noise(current, 2.0, 6);
-
-    const DetectTunables tunables;
-    MotionDetector detector;
-    const Detection d = detector.detect(previous, current, tunables);
+    const Detection d = detect_with_noise(previous, current, 2.0, 5);
 
     REQUIRE(d.found);
     CHECK(d.regions == 2);
@@ -450,12 +440,7 @@ TEST_CASE("An object at the frame border is found", "[motion_detector]") {
     GreyImage previous = blank(), current = blank();
     draw_textured_disc(previous, 2, 64, 12, 9);
     draw_textured_disc(current, 6, 64, 12, 9);
-    add_noise(previous, 2.0, 16);
-    add_noise(current, 2.0, 17);
-
-    const DetectTunables tunables;
-    MotionDetector detector;
-    const Detection d = detector.detect(previous, current, tunables);
+    const Detection d = detect_with_noise(previous, current, 2.0, 16);
     REQUIRE(d.found);
     CHECK(d.x0 == 0);
     CHECK(std::abs(d.centre.y - 64.0) < 3.0);

@@ -39,7 +39,7 @@ void add_rays(ParamTable<TrackerConfig>& table) {
         .add("none_cost", &RaysTunables::none_cost, "", 0, 10, "cost of the 'no edge on this ray' state")
         .add("polarity_weight", &RaysTunables::polarity_weight, "", 0, 10, "extra cost of an edge of the wrong sign")
         .add("region_weight", &RaysTunables::region_weight, "", 0, 10, "weight of the 1-D region term along each ray")
-        .add("foreground_weight", &RaysTunables::foreground_weight, "", 0, 10, "weight of the still camera's foreground: edges where a ray leaves it cost less")
+        .add("foreground_weight", &RaysTunables::foreground_weight, "", 0, 10, "weight of the still camera's foreground: edges where a ray leaves it cost less (0: no background is kept)")
         .add("temporal_weight", &RaysTunables::temporal_weight, "", 0, 10,
              "pull toward the previous frame's contour")
         .add("hypothesis_separation_px", &RaysTunables::hypothesis_separation_px, "px", 0, 64,

@@ -258,8 +258,11 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
     float sum = 0.0f;
     for (float s : sums) sum += s;
     model_.follow_exposure(sum / static_cast<float>(kFramePixels));
-    if (!detection_allowed_) background_.reset();  // a turning camera: what it had learned has moved
-    background_.rate(smoothed_);
+    // Only a still camera has a background (a turning one moves what it had learned), and only the
+    // foreground term uses it: with the term's weight at 0 it is not kept at all.
+    const bool keep_background = detection_allowed_ && tunables_.rays.foreground_weight > 0.0;
+    if (keep_background) background_.rate(smoothed_);
+    else background_.reset();
     rays_.use_foreground(background_.foreground());
 
     if (result_.state == TrackState::Lost && ++lost_frames_ >= tunables_.attention.lost_frames)
@@ -300,7 +303,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
         result_.predicted = contour_.centroid;
     }
     untracked_frames_ = result_.has_contour ? 0 : untracked_frames_ + 1;
-    if (detection_allowed_) background_.learn(smoothed_, result_.has_contour ? &contour_ : nullptr);
+    if (keep_background) background_.learn(smoothed_, result_.has_contour ? &contour_ : nullptr);
     external_prediction_.reset();
     previous_ = frame;
     has_previous_ = true;

@@ -27,7 +27,7 @@ struct RaysTunables {
     double polarity_weight = 0.6;  // rays.polarity_weight: extra cost of an edge of the wrong sign
     double region_weight = 0.8;    // rays.region_weight: 1-D region term along each ray
     double temporal_weight = 0.1;  // rays.temporal_weight: pull toward the previous frame's contour
-    double foreground_weight = 2.0;  // rays.foreground_weight: edges out of the still camera's foreground
+    double foreground_weight = 2.0;  // rays.foreground_weight: edges out of the still camera's foreground (0: off)
     double hypothesis_separation_px = 2.0;  // rays.hypothesis_separation_px: minimum gap between hypotheses (eq. 15)
     int centroid_rays = 32;        // rays.centroid_rays: rays used while m converges (eq. 11)
     int centroid_iterations = 6;   // rays.centroid_iterations: cap on re-extractions

@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <sys/prctl.h>
 #include <time.h>
 
 #include <algorithm>
@@ -42,6 +43,9 @@ void PulseEngine::stop() {
 }
 
 void PulseEngine::apply_realtime() {
+    // A thread under normal scheduling wakes up to its timer slack (50 µs by default) after the time
+    // it asked for; the pulse thread asks for its wake-ups as exact as the kernel gives them.
+    prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
     if (config_.rt_priority <= 0) {
         std::snprintf(realtime_, sizeof realtime_, "normal scheduling");
     } else {
@@ -89,8 +93,27 @@ void PulseEngine::run() {
         publish(clock_now);
         TimePoint wake = std::min(next_input_poll_, MonoClock::now() + kInputPeriod);
         if (io_fault_) wake = std::min(next_reopen_, MonoClock::now() + std::chrono::milliseconds(10));
-        for (const StepAxis& axis : axes_) wake = std::min(wake, axis.due());
-        sleep_until(wake);
+        TimePoint edge = TimePoint::max();
+        for (const StepAxis& axis : axes_) edge = std::min(edge, axis.due());
+        if (edge <= wake) wait_for_edge(edge);
+        else sleep_until(wake);
+    }
+}
+
+void PulseEngine::wait_for_edge(TimePoint due) {
+    // Wake-ups come late by the kernel's latency (tens of µs even under SCHED_FIFO on some machines), and
+    // a late edge costs the axis speed (step_axis.hpp). So sleep until the lead before the edge, then
+    // spin to it. The lead follows the wake-up latency's upper tail: it rises by an eighth of any
+    // excess and falls by a 512th of any margin, within kMaxWakeLead.
+    const TimePoint target = due - wake_lead_;
+    sleep_until(target);
+    const TimePoint woke = MonoClock::now();
+    const auto late = woke - target;
+    if (late > wake_lead_) wake_lead_ += (late - wake_lead_) / 8;
+    else wake_lead_ -= (wake_lead_ - late) / 512;
+    wake_lead_ = std::clamp<TimePoint::duration>(wake_lead_, TimePoint::duration::zero(), kMaxWakeLead);
+    while (MonoClock::now() < due) {
+        // spin: the lead is shorter than a sleep's wake-up latency
     }
 }
 
@@ -209,7 +232,9 @@ bool PulseEngine::step(std::size_t a) {
     const std::size_t line = config_.wiring[a].step;
     TimePoint high;
     if (!lines_.set(line, true, high)) return false;
-    max_late_us_ = std::max(max_late_us_, std::chrono::duration<double, std::micro>(high - axes_[a].due()).count());
+    const double late_us = std::chrono::duration<double, std::micro>(high - axes_[a].due()).count();
+    max_late_us_ = std::max(max_late_us_, late_us);
+    lateness_.add(late_us);
     axes_[a].stepped(high);
     const TimePoint release = high + seconds(config_.pulse_width_s);
     while (MonoClock::now() < release) {
@@ -285,8 +310,10 @@ void PulseEngine::publish(TimePoint clock_now) {
         report.enabled = enabled_;
         report.at_rest = axes_[0].at_rest() && axes_[1].at_rest();
         report.homing = homing_[0].running() || homing_[1].running();
-        report.rebases = axes_[0].rebases() + axes_[1].rebases();
+        report.late_edges = axes_[0].late_edges() + axes_[1].late_edges();
+        report.lost_steps = axes_[0].lost_steps() + axes_[1].lost_steps();
         report.max_late_us = max_late_us_;
+        report.lateness = lateness_;
         report.reopens = reopens_;
     });
 }

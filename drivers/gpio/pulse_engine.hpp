@@ -1,6 +1,6 @@
 // The stepper's I/O thread: the only code touching the lines. It generates the step and dir edges of
-// both axes (StepAxis schedules, clock_nanosleep(TIMER_ABSTIME) on CLOCK_MONOTONIC waits, a short spin
-// holds each pulse for pulse_width), polls the limit, home and E-stop inputs every kInputPeriod, runs
+// both axes (StepAxis schedules, clock_nanosleep(TIMER_ABSTIME) on CLOCK_MONOTONIC waits until a learned
+// lead before each edge and a spin the rest of the way, a short spin holds each pulse for pulse_width), polls the limit, home and E-stop inputs every kInputPeriod, runs
 // homing, and reopens the chip with backoff after an I/O error. It runs at SCHED_FIFO rt_priority
 // when the system allows, and reports whether it does.
 //
@@ -17,6 +17,7 @@
 #include "common/latest_value.hpp"
 #include "drivers/gpio/gpio_lines.hpp"
 #include "drivers/gpio/homing.hpp"
+#include "drivers/gpio/lateness_histogram.hpp"
 #include "drivers/gpio/step_axis.hpp"
 #include "drivers/gpio/stepper_config.hpp"
 
@@ -34,8 +35,10 @@ struct EngineReport {
     bool enabled = false;   // the enable lines are at their active level
     bool at_rest = true;    // both axes
     bool homing = false;
-    long rebases = 0;       // times an axis fell more than StepAxis::kMaxLag behind its timeline
+    long late_edges = 0;    // STEP edges more than StepAxis::kJitter late, both axes (each re-planned)
+    long lost_steps = 0;    // the plan's steps that lateness dropped, both axes
     double max_late_us = 0.0;  // latest step edge after its due time so far
+    LatenessHistogram lateness;  // every STEP edge's time after its due time
     long reopens = 0;
 };
 
@@ -44,6 +47,7 @@ public:
     static constexpr std::chrono::microseconds kInputPeriod{200};  // inputs polled (and idle wake-ups) this often
     static constexpr std::chrono::milliseconds kFirstBackoff{500};
     static constexpr std::chrono::seconds kLastBackoff{8};
+    static constexpr std::chrono::microseconds kMaxWakeLead{200};  // longest spin before a step edge
 
     PulseEngine(const StepperConfig& config, GpioLines& lines, const Clock& clock);
     ~PulseEngine() { stop(); }
@@ -77,6 +81,7 @@ private:
     void publish(TimePoint clock_now);
     void fault(const char* message);
     static void sleep_until(TimePoint until);
+    void wait_for_edge(TimePoint due);
 
     StepperConfig config_;
     GpioLines& lines_;
@@ -110,6 +115,8 @@ private:
     TimePoint::duration backoff_ = kFirstBackoff;
     long reopens_ = 0;
     double max_late_us_ = 0.0;
+    LatenessHistogram lateness_;
+    TimePoint::duration wake_lead_{};  // how long before a step edge the thread wakes, then spins
 };
 
 }  // namespace rays::gpio

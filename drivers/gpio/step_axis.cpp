@@ -71,9 +71,9 @@ void StepAxis::plan(const AxisGoal& goal, TimePoint now) {
     if (moving_) {
         next_speed_ = next_speed(goal);
         if (next_speed_ > 0.0) {
-            ideal_next_ = ideal_last_ + seconds(2.0 / (speed_ + next_speed_));
+            interval_ = std::max(min_interval_, seconds(2.0 / (speed_ + next_speed_)));
             action_ = Action::Step;
-            due_ = std::max(ideal_next_, actual_last_ + min_interval_);
+            due_ = last_step_ + interval_;
             return;
         }
         halt();
@@ -88,7 +88,7 @@ void StepAxis::plan(const AxisGoal& goal, TimePoint now) {
     }
     action_ = Action::Step;
     due_ = std::max(now, dir_time_ + dir_setup_);
-    if (stepped_before_) due_ = std::max(due_, actual_last_ + start_interval_);
+    if (stepped_before_) due_ = std::max(due_, last_step_ + start_interval_);
 }
 
 void StepAxis::dir_set(int direction, TimePoint at) {
@@ -97,21 +97,24 @@ void StepAxis::dir_set(int direction, TimePoint at) {
 }
 
 void StepAxis::stepped(TimePoint at) {
+    const double speed_before = speed_;
     if (!moving_) {
         moving_ = true;
         travel_ = direction_;
         speed_ = 0.0;
-        ideal_last_ = at;
     } else {
         speed_ = next_speed_;
-        ideal_last_ = ideal_next_;
-        if (at - ideal_last_ > kMaxLag) {
-            ideal_last_ = at;
-            ++rebases_;
+        if (at > due_) lost_steps_ += std::chrono::duration<double>(at - due_) / interval_;
+        if (at - due_ > kJitter) {
+            // Late beyond jitter: the speed the axis had over the interval it made (less the jitter
+            // allowed), not the one planned.
+            const double made = std::chrono::duration<double>(at - last_step_ - kJitter).count();
+            speed_ = std::min(speed_, std::max(1.0 / made, 2.0 / made - speed_before));
+            ++late_edges_;
         }
     }
     position_ += travel_;
-    actual_last_ = at;
+    last_step_ = at;
     stepped_before_ = true;
 }
 

@@ -6,11 +6,18 @@
 // 2 / (w_k + w_{k+1}); so the average rate over an interval never exceeds the larger of the two
 // speeds, and measured accelerations from edge intervals are at most `accel`. A move from rest
 // steps at once (w_0 = 0), so a new command shows on the lines without waiting out a first interval.
-// Direction changes only at rest; the first step after one waits dir_setup. Steps are scheduled on
-// an ideal timeline so wake-up jitter does not slow the motion, but never closer than 1/max_step_rate
-// to the previous step's actual edge; an axis more than kMaxLag behind its timeline is re-based.
+// Direction changes only at rest; the first step after one waits dir_setup. Each step is scheduled
+// from the previous step's actual edge, never closer than 1/max_step_rate, so an edge that comes late
+// (the thread woke after its due time) is never caught up: the steps the plan lost are counted
+// (lost_steps), not made up, and the position stays exact. Lateness up to kJitter is jitter and costs
+// nothing more; beyond it the axis re-plans from the speed it really had over the interval it made
+// less kJitter, Δt' = Δt − kJitter: w ≤ max(1/Δt', 2/Δt' − w_prev) (the second is the exact relation
+// above). So every interval's rate r_next obeys (r_next² − r'²) / 2 ≤ kRampRise · accel against the
+// rate r' = 1/Δt' of the interval before it (on time, r' is that interval's own rate; the bound is
+// reached by the second interval from rest): late edges never make the following ones beat the ramp.
 #pragma once
 #include <chrono>
+#include <cmath>
 
 #include "core/clock.hpp"
 #include "drivers/gpio/stepper_config.hpp"
@@ -28,6 +35,9 @@ struct AxisGoal {
     static AxisGoal halt() { return {Kind::Halt, 0.0, 0, 0.0}; }
 };
 
+// Between neighbouring intervals of a ramp at `accel`, (r_next² − r²) / 2 ≤ kRampRise · accel, r = 1/Δt.
+inline constexpr double kRampRise = 1.2071067811865476;  // (1 + √2) / 2
+
 // The speed at the next step for a wanted speed along the travel (≥ 0), one step's worth of ramp.
 double speed_toward(double speed, double wanted, double accel);
 // The speed at the next step of a move with `remaining` steps to go after this one (≤ 0: passed).
@@ -36,8 +46,9 @@ double speed_to_target(double speed, long remaining, double max_speed, double ac
 class StepAxis {
 public:
     enum class Action { None, SetDir, Step };
-    static constexpr std::chrono::milliseconds kMaxLag{2};
-
+    // Lateness that does not re-plan the ramp: one step at kMaxStepRateHz, so the lines are never more
+    // than one step behind the plan at the top rate (a sixteenth of a full step at 16 microsteps).
+    static constexpr std::chrono::microseconds kJitter{1000000 / kMaxStepRateHz};
     StepAxis(const AxisKinematics& kinematics, double max_step_rate_hz, double dir_setup_s);
 
     // Decides the next edge under `goal`; call after every edge and whenever the goal may change.
@@ -54,7 +65,8 @@ public:
     long position() const { return position_; }
     double velocity() const;  // steps/s, signed
     bool at_rest() const { return !moving_; }
-    long rebases() const { return rebases_; }
+    long late_edges() const { return late_edges_; }  // steps more than kJitter after their due time
+    long lost_steps() const { return std::lround(lost_steps_); }  // the plan's steps lateness dropped
 
 private:
     double next_speed(const AxisGoal& goal) const;
@@ -70,15 +82,15 @@ private:
     int travel_ = 0;
     double speed_ = 0.0;       // at the last step
     double next_speed_ = 0.0;  // at the next step
-    TimePoint ideal_last_{};
-    TimePoint ideal_next_{};
-    TimePoint actual_last_{};
+    TimePoint::duration interval_{};  // planned from the last step to the next
+    TimePoint last_step_{};
     bool stepped_before_ = false;
     TimePoint dir_time_{};
     Action action_ = Action::None;
     TimePoint due_ = TimePoint::max();
     int wanted_direction_ = 0;
-    long rebases_ = 0;
+    long late_edges_ = 0;
+    double lost_steps_ = 0.0;
 };
 
 }  // namespace rays::gpio

@@ -15,6 +15,7 @@ struct LatencyBench {
     std::string description;  // what the peer is and where the time is taken
     // Latencies in microseconds, one per command; an empty result with `error` set on failure.
     std::function<std::vector<double>(int commands, std::string& error)> run;
+    std::function<std::string()> note = nullptr;  // further figures of the last run, printed under its row
 };
 
 // Called from a static object in each bench file.

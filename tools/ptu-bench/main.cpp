@@ -67,10 +67,13 @@ int main(int argc, char** argv) {
         }
         std::sort(latencies.begin(), latencies.end());
         double median = quantile(latencies, 0.5), p99 = quantile(latencies, 0.99), max = latencies.back();
+        const std::string note = found->second.note ? found->second.note() : "";
         rows.push_back({{"driver", name}, {"commands", latencies.size()}, {"median_us", median}, {"p99_us", p99},
-                        {"max_us", max}});
-        if (!as_json)
+                        {"max_us", max}, {"note", note}});
+        if (!as_json) {
             std::printf("%-14s %8zu %10.1f %10.1f %10.1f\n", name.c_str(), latencies.size(), median, p99, max);
+            if (!note.empty()) std::printf("  %s\n", note.c_str());
+        }
     }
     if (as_json) std::printf("%s\n", nlohmann::json{{"rows", rows}}.dump().c_str());
     return failures == 0 ? 0 : 1;

@@ -1,5 +1,8 @@
 // gpio-stepper against FakeGpioLines: what the lines received (edges with their times, the steps a
-// motor would have made), not the driver's own account.
+// motor would have made), not the driver's own account. The pulse thread runs in real time, so these
+// tests assert only what holds however late it wakes on a loaded machine (counts, order, no interval
+// shorter than the limits allow) and wait for events with generous bounds; how fast it steps here is
+// ptu-bench's gpio-step-rate.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -16,7 +19,12 @@ using ptu::CommandMode;
 TEST_CASE("gpio-stepper: position moves make the commanded steps in the commanded directions", "[gpio]") {
     StepperRig rig;
     CHECK(rig.lines.level(kEnable) == false);  // enable_active_low: enabled
-    REQUIRE(rig.drive(command(CommandMode::Position, deg(10.0), deg(-5.0)), 1.0));
+    const auto at = [&rig](long pan, long tilt) {
+        return [&rig, pan, tilt] { return rig.lines.steps(kPanStep) == pan && rig.lines.steps(kTiltStep) == tilt; };
+    };
+    REQUIRE(rig.drive_until(command(CommandMode::Position, deg(10.0), deg(-5.0)),
+                            at(std::lround(10.0 * kStepsPerDeg), -std::lround(5.0 * kStepsPerDeg))));
+    REQUIRE(rig.drive(command(CommandMode::Position, deg(10.0), deg(-5.0)), 0.1));  // at rest there: nothing more
     CHECK(rig.lines.steps(kPanStep) == std::lround(10.0 * kStepsPerDeg));
     CHECK(rig.lines.steps(kTiltStep) == -std::lround(5.0 * kStepsPerDeg));
     CHECK(rig.lines.edges_of(kPanDir).size() == 1);  // no overshoot and return
@@ -28,14 +36,14 @@ TEST_CASE("gpio-stepper: position moves make the commanded steps in the commande
     CHECK(state.axes[0].position_rad == Approx(std::lround(10.0 * kStepsPerDeg) / kStepsPerRad));
     CHECK(state.axes[1].position_rad == Approx(-std::lround(5.0 * kStepsPerDeg) / kStepsPerRad));
     // Back the other way: the count follows.
-    REQUIRE(rig.drive(command(CommandMode::Position, deg(-3.0), 0.0), 1.0));
+    REQUIRE(rig.drive_until(command(CommandMode::Position, deg(-3.0), 0.0), at(std::lround(-3.0 * kStepsPerDeg), 0)));
     CHECK(rig.lines.steps(kPanStep) == std::lround(-3.0 * kStepsPerDeg));
     CHECK(rig.lines.steps(kTiltStep) == 0);
     rig.driver->deactivate();
     CHECK(rig.lines.level(kEnable) == true);  // disabled after deactivate
 }
 
-TEST_CASE("gpio-stepper: step rate stays under the maximum and ramps within max accel", "[gpio]") {
+TEST_CASE("gpio-stepper: no step interval beats the maximum rate or the ramp, however late the thread wakes", "[gpio]") {
     StepperRig rig;
     REQUIRE(rig.drive(command(CommandMode::Velocity, deg(180.0), deg(90.0)), 0.6));
     REQUIRE(rig.drive(command(CommandMode::Velocity, deg(-180.0), deg(-90.0)), 0.8));
@@ -45,44 +53,38 @@ TEST_CASE("gpio-stepper: step rate stays under the maximum and ramps within max 
     for (int line : {kPanStep, kTiltStep}) {
         const std::vector<gpio::Edge> edges = rig.lines.edges_of(line);
         const std::vector<TimePoint> steps = rising(edges);
-        REQUIRE(steps.size() > 1000);
-        double shortest = 1.0;
-        for (std::size_t i = 1; i < steps.size(); ++i) shortest = std::min(shortest, seconds_between(steps[i - 1], steps[i]));
-        CHECK(shortest >= 1.0 / max_rate);
+        REQUIRE(steps.size() > 100);  // it moved; how far depends on the machine's load
         // Pulse width: every high lasts at least pulse_width_us.
         for (std::size_t i = 0; i + 1 < edges.size(); ++i)
             if (edges[i].level) CHECK(seconds_between(edges[i].time, edges[i + 1].time) >= 5e-6);
-        // Signed position from the edges and the DIR record, sampled in 80 ms windows.
-        const std::vector<gpio::Edge> all = rig.lines.edges();
-        const int dir = line == kPanStep ? kPanDir : kTiltDir;
-        const TimePoint start = all.front().time;
-        constexpr double kWindow = 0.08;
-        std::vector<double> positions(1, 0.0);
-        double position = 0.0;
-        bool forward = false;
-        for (const gpio::Edge& edge : all) {
-            while (seconds_between(start, edge.time) > kWindow * static_cast<double>(positions.size())) positions.push_back(position);
-            if (edge.offset == dir) forward = edge.level;
-            if (edge.offset == line && edge.level) position += forward ? 1.0 : -1.0;
+        // Each interval's rate r: never above the maximum, and (r_next² − r'²) / 2 ≤ kRampRise · accel against
+        // the interval before, r' = 1/(Δt − kJitter) (step_axis.hpp): a late edge lengthens its own interval,
+        // and none after it is shortened to catch up.
+        double shortest = 1.0, rise = 0.0;
+        for (std::size_t i = 1; i < steps.size(); ++i) {
+            const double interval = seconds_between(steps[i - 1], steps[i]);
+            shortest = std::min(shortest, interval);
+            const double jitter = std::chrono::duration<double>(gpio::StepAxis::kJitter).count();
+            if (i >= 2 && seconds_between(steps[i - 2], steps[i - 1]) > 2.0 * jitter) {
+                const double before = 1.0 / (seconds_between(steps[i - 2], steps[i - 1]) - jitter), now = 1.0 / interval;
+                rise = std::max(rise, 0.5 * (now * now - before * before) / (1.0 + 1e-4));  // 1e-4: ns rounding
+            }
         }
-        double worst = 0.0;
-        for (std::size_t i = 2; i < positions.size(); ++i)
-            worst = std::max(worst, std::abs(positions[i] - 2 * positions[i - 1] + positions[i - 2]) / (kWindow * kWindow));
-        // Allowed: ±1 step of quantisation per window, and the catch-up step_axis.hpp documents: an axis
-        // woken up to kMaxLag late steps faster until it is back on its timeline, which moves up to
-        // top speed × kMaxLag steps across a window boundary (counted twice in a second difference).
-        const double top_speed = 180.0 * kStepsPerDeg;
-        const double catch_up = 2.0 * top_speed * std::chrono::duration<double>(gpio::StepAxis::kMaxLag).count();
-        const double allowed = 1.1 * accel + (2.0 + catch_up) / (kWindow * kWindow);
-        INFO("largest windowed acceleration " << worst << " steps/s^2, allowed " << allowed << ", max accel " << accel);
-        CHECK(worst <= allowed);
-        CHECK(worst >= 0.5 * accel);  // it did ramp at about max accel
+        const gpio::EngineReport report = rig.driver->report();
+        INFO("shortest interval " << shortest * 1e6 << " us; largest rise " << rise << " steps/s^2, max accel " << accel
+                                  << "; " << report.late_edges << " late edges, " << report.lost_steps << " steps lost");
+        CHECK(shortest >= 1.0 / max_rate);
+        CHECK(rise <= 1.001 * gpio::kRampRise * accel);
     }
 }
 
 TEST_CASE("gpio-stepper: DIR changes only at rest and stays stable for dir_setup before the next step", "[gpio]") {
     StepperRig rig;
-    for (int i = 0; i < 4; ++i) REQUIRE(rig.drive(command(CommandMode::Velocity, deg(i % 2 ? -40.0 : 40.0), 0.0), 0.25));
+    for (std::size_t i = 0; i < 4; ++i)  // each way until DIR has changed and a step has followed
+        REQUIRE(rig.drive_until(command(CommandMode::Velocity, deg(i % 2 ? -40.0 : 40.0), 0.0), [&] {
+            const std::vector<gpio::Edge> all = rig.lines.edges();
+            return rig.lines.edges_of(kPanDir).size() == i + 1 && all.back().offset == kPanStep;
+        }));
     REQUIRE(rig.drive(command(CommandMode::Velocity, 0.0, 0.0), 0.2));
     const std::vector<gpio::Edge> all = rig.lines.edges();
     int dir_changes = 0;
@@ -123,10 +125,10 @@ TEST_CASE("gpio-stepper: homing seeks the switch, backs off and sets the offset"
     CHECK(rig.lines.edges_of(kPanStep).empty());
     ptu::PtuState state;
     REQUIRE(rig.driver->home(rig.clock.now()).ok);
-    for (int i = 0; i < 300 && !(state.axes[0].homed && state.axes[1].homed); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    StepperRig::wait_until([&] {
         rig.driver->read(state, rig.clock.now());
-    }
+        return state.axes[0].homed && state.axes[1].homed;
+    });
     REQUIRE(state.axes[0].homed);
     REQUIRE(state.axes[1].homed);
     const long backoff = std::lround(2.0 * kStepsPerDeg);
@@ -138,15 +140,17 @@ TEST_CASE("gpio-stepper: homing seeks the switch, backs off and sets the offset"
     const std::vector<gpio::Edge> pan = rig.lines.edges_of(kPanStep);
     CHECK(rising(pan).size() >= 300 + static_cast<std::size_t>(backoff));
     // Now moves are allowed and counted from the offset.
-    REQUIRE(rig.drive(command(CommandMode::Position, deg(-85.0), deg(45.0)), 0.5));
-    CHECK(rig.lines.steps(kPanStep) == -299 + backoff + std::lround(-85.0 * kStepsPerDeg) - std::lround(-90.0 * kStepsPerDeg));
+    const long pan_target = -299 + backoff + std::lround(-85.0 * kStepsPerDeg) - std::lround(-90.0 * kStepsPerDeg);
+    CHECK(rig.drive_until(command(CommandMode::Position, deg(-85.0), deg(45.0)),
+                          [&] { return rig.lines.steps(kPanStep) == pan_target; }));
 }
 
 TEST_CASE("gpio-stepper: a limit switch faults its axis and stops the other", "[gpio]") {
     gpio::GpioSettings s = rig_settings();
     s.pan_limit_max_line = kPanMax;
     StepperRig rig(s, true, {{kPanMax, kPanStep, kPanDir, 500, false, false}});  // active low
-    rig.drive(command(CommandMode::Velocity, deg(20.0), deg(20.0)), 1.0);
+    REQUIRE(rig.drive_until(command(CommandMode::Velocity, deg(20.0), deg(20.0)),
+                            [&rig] { return !rig.driver->report().status.ok && rig.driver->report().at_rest; }));
     ptu::PtuState state;
     const ptu::DriverStatus status = rig.read(state);
     REQUIRE_FALSE(status.ok);
@@ -173,28 +177,36 @@ TEST_CASE("gpio-stepper: E-stop stops every edge and faults until released", "[g
     const ptu::DriverStatus status = rig.read(state);
     REQUIRE_FALSE(status.ok);
     CHECK(std::strstr(status.what(), "E-stop") != nullptr);
-    for (const gpio::Edge& edge : rig.lines.edges())  // one poll period and one pulse at most
-        if (edge.offset == kPanStep || edge.offset == kTiltStep)
-            CHECK(seconds_between(asserted, edge.time) < 0.002);
+    // The thread reads its inputs at least every kInputPeriod of its own time and steps each axis at
+    // most once per wake-up, so at most one step per axis starts after the switch closed, however late.
+    int after = 0;
+    for (const gpio::Edge& edge : rig.lines.edges())
+        if ((edge.offset == kPanStep || edge.offset == kTiltStep) && edge.level && edge.time > asserted) ++after;
+    CHECK(after <= 2);
     rig.lines.set_input(kEstop, false);
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    CHECK(rig.read(state).ok);
+    CHECK(StepperRig::wait_until([&] { return rig.read(state).ok; }));
     const std::size_t edges = rig.lines.edge_count();
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the old command does not restart motion
     CHECK(rig.lines.edge_count() == edges);
-    REQUIRE(rig.drive(command(CommandMode::Velocity, deg(60.0), deg(-60.0)), 0.2));  // a fresh one does
-    CHECK(rig.lines.edge_count() > edges);
+    CHECK(rig.drive_until(command(CommandMode::Velocity, deg(60.0), deg(-60.0)),  // a fresh one does
+                          [&] { return rig.lines.edge_count() > edges; }));
 }
 
 TEST_CASE("gpio-stepper: a stale command stream ramps the axes to a stop", "[gpio]") {
     StepperRig rig;
     REQUIRE(rig.drive(command(CommandMode::Velocity, deg(90.0), deg(90.0)), 0.3));
     const TimePoint last_write = MonoClock::now();
-    std::this_thread::sleep_for(std::chrono::milliseconds(900));  // timeout 0.3 s + ramp 0.125 s
+    // Stopped: no edge for 0.5 s (timeout 0.3 s + ramp 0.125 s on an idle machine).
+    std::size_t edges = rig.lines.edge_count();
+    TimePoint changed = MonoClock::now();
+    REQUIRE(StepperRig::wait_until([&] {
+        if (rig.lines.edge_count() != edges) edges = rig.lines.edge_count(), changed = MonoClock::now();
+        return seconds_between(changed, MonoClock::now()) > 0.5;
+    }));
     const std::vector<TimePoint> steps = rising(rig.lines.edges_of(kPanStep));
     REQUIRE_FALSE(steps.empty());
-    CHECK(seconds_between(last_write, steps.back()) < 0.3 + 0.125 + 0.02);
-    CHECK(seconds_between(last_write, steps.back()) > 0.29);
+    CHECK(seconds_between(last_write, steps.back()) > 0.29);  // it kept going until the command was stale
+    CHECK(rig.driver->report().at_rest);
 }
 
 TEST_CASE("gpio-stepper: an I/O error stops, faults, reopens with backoff and recovers", "[gpio]") {
@@ -202,18 +214,18 @@ TEST_CASE("gpio-stepper: an I/O error stops, faults, reopens with backoff and re
     REQUIRE(rig.drive(command(CommandMode::Velocity, deg(30.0), 0.0), 0.2));
     rig.lines.set_failing(true);
     ptu::PtuState state;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    REQUIRE(StepperRig::wait_until([&] { return !rig.driver->report().status.ok; }));
     const ptu::DriverStatus status = rig.read(state);
     REQUIRE_FALSE(status.ok);
     CHECK(std::strstr(status.what(), "I/O") != nullptr);
     CHECK_FALSE(state.axes[0].homed);
+    const TimePoint failed = MonoClock::now();
     rig.lines.set_failing(false);
-    std::this_thread::sleep_for(std::chrono::milliseconds(700));  // first retry after 0.5 s
-    CHECK(rig.read(state).ok);
+    REQUIRE(StepperRig::wait_until([&] { return rig.read(state).ok; }));
+    CHECK(seconds_between(failed, MonoClock::now()) >= 0.45);  // the first retry waits out kFirstBackoff
     CHECK(rig.lines.open_count() == 2);
     const long before = rig.lines.steps(kPanStep);
-    REQUIRE(rig.drive(command(CommandMode::Velocity, deg(30.0), 0.0), 0.2));
-    CHECK(rig.lines.steps(kPanStep) > before);
+    CHECK(rig.drive_until(command(CommandMode::Velocity, deg(30.0), 0.0), [&] { return rig.lines.steps(kPanStep) > before; }));
 }
 
 TEST_CASE("gpio-stepper: the factory refuses settings that cannot work", "[gpio]") {
@@ -247,5 +259,5 @@ TEST_CASE("gpio-stepper: write before activate moves nothing; the pulse thread r
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     CHECK(rig.lines.edges_of(kPanStep).empty());
     CHECK(rig.lines.level(kEnable) == true);  // disabled
-    CHECK(std::strlen(rig.driver->realtime()) > 0);
+    CHECK(StepperRig::wait_until([&] { return std::strlen(rig.driver->realtime()) > 0; }));
 }

@@ -95,25 +95,28 @@ void PulseEngine::run() {
         if (io_fault_) wake = std::min(next_reopen_, MonoClock::now() + std::chrono::milliseconds(10));
         TimePoint edge = TimePoint::max();
         for (const StepAxis& axis : axes_) edge = std::min(edge, axis.due());
-        if (edge <= wake) wait_for_edge(edge);
+        if (edge <= wake) wake_before(edge);
         else sleep_until(wake);
     }
 }
 
-void PulseEngine::wait_for_edge(TimePoint due) {
+void PulseEngine::wake_before(TimePoint due) {
     // Wake-ups come late by the kernel's latency (tens of µs even under SCHED_FIFO on some machines), and
-    // a late edge costs the axis speed (step_axis.hpp). So sleep until the lead before the edge, then
-    // spin to it. The lead follows the wake-up latency's upper tail: it rises by an eighth of any
-    // excess and falls by a 512th of any margin, within kMaxWakeLead.
+    // a late edge costs the axis speed (step_axis.hpp). So the thread sleeps until a lead before the
+    // edge, and edges() spins the rest of the way right before setting the line. The lead follows the
+    // wake-up latency's upper tail: it rises by an eighth of any excess and falls by a 512th of any
+    // margin, within kMaxWakeLead.
     const TimePoint target = due - wake_lead_;
     sleep_until(target);
-    const TimePoint woke = MonoClock::now();
-    const auto late = woke - target;
+    const auto late = MonoClock::now() - target;
     if (late > wake_lead_) wake_lead_ += (late - wake_lead_) / 8;
     else wake_lead_ -= (wake_lead_ - late) / 512;
     wake_lead_ = std::clamp<TimePoint::duration>(wake_lead_, TimePoint::duration::zero(), kMaxWakeLead);
+}
+
+void PulseEngine::spin_until(TimePoint due) {
     while (MonoClock::now() < due) {
-        // spin: the lead is shorter than a sleep's wake-up latency
+        // spin: shorter than a sleep's wake-up latency
     }
 }
 
@@ -230,6 +233,7 @@ bool PulseEngine::drive_enable(bool on) {
 
 bool PulseEngine::step(std::size_t a) {
     const std::size_t line = config_.wiring[a].step;
+    spin_until(axes_[a].due());
     TimePoint high;
     if (!lines_.set(line, true, high)) return false;
     const double late_us = std::chrono::duration<double, std::micro>(high - axes_[a].due()).count();
@@ -237,9 +241,7 @@ bool PulseEngine::step(std::size_t a) {
     lateness_.add(late_us);
     axes_[a].stepped(high);
     const TimePoint release = high + seconds(config_.pulse_width_s);
-    while (MonoClock::now() < release) {
-        // spin: the pulse is shorter than a sleep's wake-up latency
-    }
+    spin_until(release);
     TimePoint low;
     return lines_.set(line, false, low);
 }
@@ -250,9 +252,10 @@ bool PulseEngine::edges(TimePoint now, TimePoint clock_now) {
         bool acted = false;
         for (std::size_t a = 0; a < ptu::kAxes; ++a) {
             axes_[a].plan(goal_for(a, now, clock_now), now);
-            if (axes_[a].due() > now) continue;
+            if (axes_[a].due() > now + wake_lead_) continue;  // within the lead: spun to in time
             acted = true;
             if (axes_[a].action() == StepAxis::Action::SetDir) {
+                spin_until(axes_[a].due());
                 TimePoint at;
                 const int direction = axes_[a].wanted_direction();
                 if (!lines_.set(config_.wiring[a].dir, direction > 0, at)) return false;

@@ -1,6 +1,6 @@
 // The stepper's I/O thread: the only code touching the lines. It generates the step and dir edges of
-// both axes (StepAxis schedules, clock_nanosleep(TIMER_ABSTIME) on CLOCK_MONOTONIC waits until a learned
-// lead before each edge and a spin the rest of the way, a short spin holds each pulse for pulse_width), polls the limit, home and E-stop inputs every kInputPeriod, runs
+// both axes (StepAxis schedules; clock_nanosleep(TIMER_ABSTIME) on CLOCK_MONOTONIC waits until a learned
+// lead before each edge, a spin the rest of the way; a short spin holds each pulse for pulse_width), polls the limit, home and E-stop inputs every kInputPeriod, runs
 // homing, and reopens the chip with backoff after an I/O error. It runs at SCHED_FIFO rt_priority
 // when the system allows, and reports whether it does.
 //
@@ -81,7 +81,8 @@ private:
     void publish(TimePoint clock_now);
     void fault(const char* message);
     static void sleep_until(TimePoint until);
-    void wait_for_edge(TimePoint due);
+    void wake_before(TimePoint due);
+    static void spin_until(TimePoint due);
 
     StepperConfig config_;
     GpioLines& lines_;

@@ -6,7 +6,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <numbers>
@@ -16,6 +15,7 @@
 
 #include "drivers/gpio/fake_gpio_lines.hpp"
 #include "drivers/gpio/gpio_stepper.hpp"
+#include "support/eventually.hpp"
 
 namespace rays::test {
 
@@ -72,28 +72,19 @@ struct StepperRig {
         return ok;
     }
 
-    // Writes `command` at 100 Hz until `done` holds or `timeout_s` passes; whether it held. The
-    // timeout is generous: it only ends a test whose behaviour is wrong, whatever the machine's load.
-    bool drive_until(const ptu::PtuCommand& command, const std::function<bool()>& done, double timeout_s = 30.0) {
-        return wait_until(done, timeout_s, [&] { driver->write(command, clock.now()); });
-    }
-
-    // Polls `done` every 10 ms (calling `between` before each poll) until it holds or `timeout_s` passes.
-    static bool wait_until(const std::function<bool()>& done, double timeout_s = 30.0,
-                           const std::function<void()>& between = [] {}) {
-        const auto end = MonoClock::now() + std::chrono::duration_cast<TimePoint::duration>(std::chrono::duration<double>(timeout_s));
-        while (MonoClock::now() < end) {
-            between();
-            if (done()) return true;
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-        return done();
+    // Writes `command` about every 10 ms until `done` holds (test::eventually's generous bound); whether it held.
+    template <class Predicate>
+    bool drive_until(const ptu::PtuCommand& command, Predicate done) {
+        return eventually([&] {
+            driver->write(command, clock.now());
+            return done();
+        });
     }
 
     // The driver's state from a report the pulse thread published after this call began.
     ptu::DriverStatus read(ptu::PtuState& state) {
         const TimePoint asked = clock.now();
-        wait_until([&] { return driver->report().state.stamp > asked; });
+        eventually([&] { return driver->report().state.stamp > asked; });
         return driver->read(state, clock.now());
     }
 

@@ -125,7 +125,7 @@ TEST_CASE("gpio-stepper: homing seeks the switch, backs off and sets the offset"
     CHECK(rig.lines.edges_of(kPanStep).empty());
     ptu::PtuState state;
     REQUIRE(rig.driver->home(rig.clock.now()).ok);
-    StepperRig::wait_until([&] {
+    eventually([&] {
         rig.driver->read(state, rig.clock.now());
         return state.axes[0].homed && state.axes[1].homed;
     });
@@ -184,7 +184,7 @@ TEST_CASE("gpio-stepper: E-stop stops every edge and faults until released", "[g
         if ((edge.offset == kPanStep || edge.offset == kTiltStep) && edge.level && edge.time > asserted) ++after;
     CHECK(after <= 2);
     rig.lines.set_input(kEstop, false);
-    CHECK(StepperRig::wait_until([&] { return rig.read(state).ok; }));
+    CHECK(eventually([&] { return rig.read(state).ok; }));
     const std::size_t edges = rig.lines.edge_count();
     std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the old command does not restart motion
     CHECK(rig.lines.edge_count() == edges);
@@ -199,7 +199,7 @@ TEST_CASE("gpio-stepper: a stale command stream ramps the axes to a stop", "[gpi
     // Stopped: no edge for 0.5 s (timeout 0.3 s + ramp 0.125 s on an idle machine).
     std::size_t edges = rig.lines.edge_count();
     TimePoint changed = MonoClock::now();
-    REQUIRE(StepperRig::wait_until([&] {
+    REQUIRE(eventually([&] {
         if (rig.lines.edge_count() != edges) edges = rig.lines.edge_count(), changed = MonoClock::now();
         return seconds_between(changed, MonoClock::now()) > 0.5;
     }));
@@ -214,14 +214,14 @@ TEST_CASE("gpio-stepper: an I/O error stops, faults, reopens with backoff and re
     REQUIRE(rig.drive(command(CommandMode::Velocity, deg(30.0), 0.0), 0.2));
     rig.lines.set_failing(true);
     ptu::PtuState state;
-    REQUIRE(StepperRig::wait_until([&] { return !rig.driver->report().status.ok; }));
+    REQUIRE(eventually([&] { return !rig.driver->report().status.ok; }));
     const ptu::DriverStatus status = rig.read(state);
     REQUIRE_FALSE(status.ok);
     CHECK(std::strstr(status.what(), "I/O") != nullptr);
     CHECK_FALSE(state.axes[0].homed);
     const TimePoint failed = MonoClock::now();
     rig.lines.set_failing(false);
-    REQUIRE(StepperRig::wait_until([&] { return rig.read(state).ok; }));
+    REQUIRE(eventually([&] { return rig.read(state).ok; }));
     CHECK(seconds_between(failed, MonoClock::now()) >= 0.45);  // the first retry waits out kFirstBackoff
     CHECK(rig.lines.open_count() == 2);
     const long before = rig.lines.steps(kPanStep);
@@ -259,5 +259,5 @@ TEST_CASE("gpio-stepper: write before activate moves nothing; the pulse thread r
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     CHECK(rig.lines.edges_of(kPanStep).empty());
     CHECK(rig.lines.level(kEnable) == true);  // disabled
-    CHECK(StepperRig::wait_until([&] { return std::strlen(rig.driver->realtime()) > 0; }));
+    CHECK(eventually([&] { return std::strlen(rig.driver->realtime()) > 0; }));
 }

@@ -79,7 +79,6 @@ struct Extraction {
         smoother.set_sigma(tunables.sigma_px);
         smoother.smooth(frame.image, smoothed);
         const Clock& c = clock ? *clock : steady;
-        if (!clock) deadline = steady.now() + 1s;
         rays.extract(smoothed, m, prior, use_temporal, model, c, deadline, contour, max_level);
         return contour;
     }

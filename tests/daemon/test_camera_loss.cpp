@@ -14,6 +14,7 @@
 #include "drivers/mock/mock_ptu.hpp"
 #include "fake_video_device.hpp"
 #include "scenes/scene.hpp"
+#include "support/eventually.hpp"
 #include "test_frames.hpp"
 
 namespace {
@@ -62,17 +63,6 @@ double unit_speed(ptu::MockPtu& mock, const Clock& clock) {
     return std::hypot(state.axes[0].velocity_rad_s, state.axes[1].velocity_rad_s);
 }
 
-// Whether the unit moves within `limit`: finding and following the target takes the loop a few frames,
-// many more under the sanitizers on a busy machine, so the test waits for it rather than a fixed time.
-bool moves_within(ptu::MockPtu& mock, const Clock& clock, std::chrono::milliseconds limit) {
-    const auto end = std::chrono::steady_clock::now() + limit;
-    while (std::chrono::steady_clock::now() < end) {
-        if (unit_speed(mock, clock) > 0.05) return true;
-        std::this_thread::sleep_for(20ms);
-    }
-    return false;
-}
-
 }  // namespace
 
 TEST_CASE("a camera unplugged while tracking stops the axes until it is back") {
@@ -90,36 +80,39 @@ TEST_CASE("a camera unplugged while tracking stops the axes until it is back") {
     capture.start();
     std::thread loop_thread([&] { loop.run(); });
 
-    CHECK(moves_within(mock, clock, 8000ms));  // the target is found and followed
+    // Finding and following the target takes the loop a few frames, many more under the sanitizers on a
+    // busy machine, so the test waits for the unit to move rather than a fixed time.
+    auto moving = [&] { return unit_speed(mock, clock) > 0.05; };
+    CHECK(test::eventually(moving));  // the target is found and followed
     CHECK(channels.camera_connected);
 
     source.plugged_ = false;
-    std::this_thread::sleep_for(1000ms);
+    auto status_says_away = [&] {
+        bool away = false;
+        channels.status.read([&](const LoopStatus& status) { away = !status.camera_connected; });
+        return away;
+    };
+    CHECK(test::eventually([&] { return status_says_away() && unit_speed(mock, clock) == 0.0; }));
     CHECK_FALSE(channels.camera_connected);
-    CHECK(unit_speed(mock, clock) == 0.0);
     std::size_t records_when_stopped = mock.records().size();
-    std::this_thread::sleep_for(300ms);
+    // The loop keeps writing while the camera is away...
+    CHECK(test::eventually([&] { return mock.records().size() > records_when_stopped; }));
     auto since = mock.records().subspan(records_when_stopped);
-    CHECK(!since.empty());  // the loop keeps writing while the camera is away...
     for (const ptu::CommandRecord& record : since)  // ...and every command is a stop
         for (const ptu::AxisCommand& axis : record.command.axes) {
             CHECK(axis.mode == ptu::CommandMode::Velocity);
             CHECK(axis.value == 0.0);
         }
-    bool status_says_away = false;
-    channels.status.read([&](const LoopStatus& status) { status_says_away = !status.camera_connected; });
-    CHECK(status_says_away);
 
     source.plugged_ = true;
-    CHECK(moves_within(mock, clock, 8000ms));  // following the target again
+    CHECK(test::eventually(moving));  // following the target again
     CHECK(channels.camera_connected);
 
     channels.stop = true;
     channels.frames.close();
     loop_thread.join();
-    capture.stop(1000ms);
-    std::this_thread::sleep_for(500ms);  // the unit ramps down at its own acceleration
-    CHECK(unit_speed(mock, clock) == 0.0);
+    capture.stop(10s);  // returns once the thread has ended; a short grace could detach it when loaded
+    CHECK(test::eventually([&] { return unit_speed(mock, clock) == 0.0; }));  // it ramps down at its own acceleration
 }
 
 TEST_CASE("the V4L2 source keeps kernel timestamps, reports an unplug once, and streams again after replug") {

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <functional>
 #include <thread>
 
 #include "daemon/daemon.hpp"
@@ -19,6 +20,7 @@
 #include "drivers/gpio/fake_pwm_channel.hpp"
 #include "drivers/gpio/gpio_stepper.hpp"
 #include "drivers/gpio/pwm_servo.hpp"
+#include "support/eventually.hpp"
 
 namespace {
 
@@ -36,14 +38,15 @@ DaemonConfig load_config(const std::string& name, const std::string& sections) {
     return config;
 }
 
-// Runs the daemon with `driver` for `seconds`, then stops it; returns its exit status.
-int run_daemon(const DaemonConfig& config, std::unique_ptr<ptu::PtuDriver> driver, std::chrono::milliseconds time) {
+// Runs the daemon with `driver` until `moved` holds (however long a loaded machine takes, within
+// kEventTimeout), then stops it; returns its exit status.
+int run_daemon(const DaemonConfig& config, std::unique_ptr<ptu::PtuDriver> driver, const std::function<bool()>& moved) {
     block_daemon_signals();
     SteadyClock clock;
     Daemon daemon(config, "", DaemonParts{nullptr, std::move(driver), nullptr}, clock);
     int status = -1;
     std::thread runner([&] { status = daemon.run(); });
-    std::this_thread::sleep_for(time);
+    test::eventually(moved);
     daemon.request_stop();
     runner.join();
     return status;
@@ -64,12 +67,11 @@ TEST_CASE("driver = canopen: CiA 402 drives on the bus follow the tracker and st
     std::string error;
     auto driver = canopen::make_canopen_driver(config.canopen, bus.transport_for(bus.add_endpoint()), clock, error);
     REQUIRE(driver);
-    CHECK(run_daemon(config, std::move(driver), 2500ms) == 0);
-    CHECK(std::abs(pan.position_rad()) + std::abs(tilt.position_rad()) > 0.01);  // it moved
-    std::this_thread::sleep_for(300ms);
-    CHECK(pan.velocity_rad_s() == 0.0);
-    CHECK(tilt.velocity_rad_s() == 0.0);
+    auto moved = [&] { return std::abs(pan.position_rad()) + std::abs(tilt.position_rad()) > 0.01; };
+    CHECK(run_daemon(config, std::move(driver), [&] { return moved() && pan.received().size() > 100; }) == 0);
+    CHECK(moved());
     CHECK(pan.received().size() > 100);  // RPDOs every cycle
+    CHECK(test::eventually([&] { return pan.velocity_rad_s() == 0.0 && tilt.velocity_rad_s() == 0.0; }));
 }
 
 TEST_CASE("driver = odrive: ODrive axes on the bus follow the tracker and stop at exit") {
@@ -84,11 +86,10 @@ TEST_CASE("driver = odrive: ODrive axes on the bus follow the tracker and stop a
     std::string error;
     auto driver = odrive::make_odrive_driver(config.odrive, bus.transport_for(bus.add_endpoint()), clock, error);
     REQUIRE(driver);
-    CHECK(run_daemon(config, std::move(driver), 2500ms) == 0);
-    CHECK(std::abs(pan.position_rad()) + std::abs(tilt.position_rad()) > 0.01);
-    std::this_thread::sleep_for(300ms);
-    CHECK(pan.velocity_rad_s() == 0.0);
-    CHECK(tilt.velocity_rad_s() == 0.0);
+    auto moved = [&] { return std::abs(pan.position_rad()) + std::abs(tilt.position_rad()) > 0.01; };
+    CHECK(run_daemon(config, std::move(driver), moved) == 0);
+    CHECK(moved());
+    CHECK(test::eventually([&] { return pan.velocity_rad_s() == 0.0 && tilt.velocity_rad_s() == 0.0; }));
 }
 
 TEST_CASE("driver = gpio-stepper: step and direction edges follow the tracker and stop at exit") {
@@ -103,8 +104,9 @@ TEST_CASE("driver = gpio-stepper: step and direction edges follow the tracker an
     auto driver = gpio::make_gpio_stepper_driver(config.gpio, clock, lines, error);
     INFO(error);
     REQUIRE(driver);
-    CHECK(run_daemon(config, std::move(driver), 2500ms) == 0);
-    CHECK(std::abs(lines.steps(0)) + std::abs(lines.steps(2)) > 20);  // the motors turned
+    auto turned = [&] { return std::abs(lines.steps(0)) + std::abs(lines.steps(2)) > 20; };
+    CHECK(run_daemon(config, std::move(driver), turned) == 0);
+    CHECK(turned());  // the motors turned
     std::size_t edges = lines.edge_count();
     std::this_thread::sleep_for(500ms);
     CHECK(lines.edge_count() == edges);  // no step after the daemon stopped
@@ -117,7 +119,8 @@ TEST_CASE("driver = pwm-servo: servo pulse widths follow the tracker") {
     std::string error;
     auto driver = gpio::make_pwm_servo_driver(config.pwm, clock, pan, tilt, error);
     REQUIRE(driver);
-    CHECK(run_daemon(config, std::move(driver), 2500ms) == 0);
-    CHECK(std::abs(pan.duty_ns() - 1'500'000) + std::abs(tilt.duty_ns() - 1'500'000) > 10'000);  // moved off centre
+    auto moved = [&] { return std::abs(pan.duty_ns() - 1'500'000) + std::abs(tilt.duty_ns() - 1'500'000) > 10'000; };
+    CHECK(run_daemon(config, std::move(driver), [&] { return moved() && pan.writes().size() > 10; }) == 0);
+    CHECK(moved());  // off centre
     CHECK(pan.writes().size() > 10);
 }

@@ -10,6 +10,7 @@
 #include "captured_log.hpp"
 #include "daemon_process.hpp"
 #include "drivers/mock/mock_ptu.hpp"
+#include "support/eventually.hpp"
 
 namespace {
 
@@ -56,19 +57,21 @@ TEST_CASE("a PTU fault stops the axes, is reported in status and log, and contro
         return copy;
     };
 
-    std::this_thread::sleep_for(1500ms);
-    REQUIRE(status().last.state == TrackState::Tracking);
+    REQUIRE(test::eventually([&] { return status().last.state == TrackState::Tracking; }));
     CHECK_FALSE(status().ptu_fault);
 
     mock.inject_fault(ptu::Axis::Tilt, "overcurrent");
-    std::this_thread::sleep_for(300ms);
+    REQUIRE(test::eventually([&] { return status().ptu_fault; }));
     LoopStatus faulted = status();
-    CHECK(faulted.ptu_fault);
     CHECK(std::string(faulted.ptu_message.data()) == "mock: tilt axis fault: overcurrent");
     CHECK(faulted.stats.driver_errors > 0);
-    std::size_t at_fault = mock.records().size();
-    std::this_thread::sleep_for(300ms);
-    CHECK(mock.records().size() > at_fault);  // the loop keeps commanding...
+    // Once the limiter has ramped the last motion down (at its deceleration limit):
+    REQUIRE(test::eventually([&] {
+        const auto records = mock.records();
+        return !records.empty() && only_stops(records.last(1));
+    }));
+    const std::size_t at_fault = mock.records().size();
+    CHECK(test::eventually([&] { return mock.records().size() > at_fault + 5; }));  // the loop keeps commanding...
     CHECK(only_stops(mock.records().subspan(at_fault)));  // ...nothing but stops
     ptu::PtuState unit;
     mock.read(unit, clock.now());
@@ -76,15 +79,16 @@ TEST_CASE("a PTU fault stops the axes, is reported in status and log, and contro
     CHECK(unit.axes[1].velocity_rad_s == 0.0);
 
     mock.clear_fault();
-    std::this_thread::sleep_for(1500ms);
-    CHECK_FALSE(status().ptu_fault);
-    mock.read(unit, clock.now());
-    CHECK(std::abs(unit.axes[0].velocity_rad_s) + std::abs(unit.axes[1].velocity_rad_s) > 0.0);  // following again
+    CHECK(test::eventually([&] { return !status().ptu_fault; }));
+    CHECK(test::eventually([&] {  // following again
+        mock.read(unit, clock.now());
+        return std::abs(unit.axes[0].velocity_rad_s) + std::abs(unit.axes[1].velocity_rad_s) > 0.0;
+    }));
 
     channels.stop = true;
     channels.frames.close();
     loop_thread.join();
-    capture.stop(1000ms);
+    capture.stop(10s);  // returns once the thread has ended; a short grace could detach it when loaded
     // The frame loop's log lines, as the socket thread would write them.
     test::CapturedLog log;
     channels.log.drain();

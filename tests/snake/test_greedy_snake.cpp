@@ -49,7 +49,7 @@ struct Fit {
         rays::snake::write_snake_contour(snake, *smoothed, r, contour);
         return r;
     }
-    SnakeRun run() { return run(steady, steady.now() + 1s); }
+    SnakeRun run() { return run(steady, rays::TimePoint::max()); }
 };
 
 }  // namespace

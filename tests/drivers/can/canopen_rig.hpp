@@ -11,18 +11,9 @@
 #include "drivers/can/canopen/canopen_ids.hpp"
 #include "drivers/can/sim/cia402_sim_drive.hpp"
 #include "drivers/can/sim/loopback_bus.hpp"
+#include "support/eventually.hpp"
 
 namespace rays::test {
-
-// Polls `done` for up to `seconds`: the simulated drives act on their own thread.
-inline bool eventually(const std::function<bool()>& done, double seconds = 1.0) {
-    const auto end = MonoClock::now() + std::chrono::duration<double>(seconds);
-    while (!done()) {
-        if (MonoClock::now() >= end) return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-    return true;
-}
 
 inline canopen::CanopenSettings fast_canopen_settings() {
     canopen::CanopenSettings s;
@@ -69,9 +60,9 @@ struct CanopenRig {
         return all_ok;
     }
 
-    // Writes `command` every 5 ms until `done` or `seconds` pass; true when done.
-    bool run_until(const ptu::PtuCommand& command, double seconds, const std::function<bool()>& done) {
-        const auto end = MonoClock::now() + std::chrono::duration<double>(seconds);
+    // Writes `command` every 5 ms until `done`, for at most kEventTimeout; true when done.
+    bool run_until(const ptu::PtuCommand& command, const std::function<bool()>& done) {
+        const auto end = MonoClock::now() + kEventTimeout;
         while (MonoClock::now() < end) {
             status = driver->write(command, clock.now());
             status = driver->read(state, clock.now());

@@ -10,6 +10,7 @@
 #include "drivers/can/odrive/odrive_protocol.hpp"
 #include "drivers/can/sim/loopback_bus.hpp"
 #include "drivers/can/sim/odrive_sim_axis.hpp"
+#include "support/eventually.hpp"
 
 namespace rays::test {
 
@@ -54,8 +55,8 @@ struct OdriveRig {
         return all_ok;
     }
 
-    bool run_until(const ptu::PtuCommand& command, double seconds, const std::function<bool()>& done) {
-        const auto end = MonoClock::now() + std::chrono::duration<double>(seconds);
+    bool run_until(const ptu::PtuCommand& command, const std::function<bool()>& done) {
+        const auto end = MonoClock::now() + kEventTimeout;
         while (MonoClock::now() < end) {
             status = driver->write(command, clock.now());
             status = driver->read(state, clock.now());

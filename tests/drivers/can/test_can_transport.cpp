@@ -42,7 +42,7 @@ TEST_CASE("SocketCanTransport sends and receives on vcan0", "[can][socketcan]") 
     frame.data[0] = 0xAB;
     REQUIRE(a.send(frame) == CanIo::Ok);
     can_frame got{};
-    REQUIRE(b.receive(got, std::chrono::milliseconds(200)) == CanIo::Ok);
+    REQUIRE(b.receive(got, std::chrono::seconds(10)) == CanIo::Ok);
     CHECK(got.can_id == 0x123u);
     CHECK(got.data[0] == 0xAB);
     b.wake();

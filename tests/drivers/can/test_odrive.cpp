@@ -57,9 +57,11 @@ TEST_CASE("odrive: bring-up clears errors, sets the controller mode and enters c
 TEST_CASE("odrive: velocity and position commands move the axes through the gear ratio", "[odrive]") {
     OdriveRig rig;
     bring_up(rig);
-    CHECK(rig.run(velocities(0.5, -0.3), 0.5));
-    CHECK(rig.pan.velocity_rad_s() == Approx(0.5).margin(1e-3));
-    CHECK(rig.tilt.velocity_rad_s() == Approx(-0.3).margin(1e-3));
+    CHECK(rig.run_until(velocities(0.5, -0.3), [&] {  // up to speed, and the driver reading that speed back
+        return rig.status.ok && std::abs(rig.pan.velocity_rad_s() - 0.5) < 1e-3 &&
+               std::abs(rig.tilt.velocity_rad_s() + 0.3) < 1e-3 &&
+               std::abs(rig.state.axes[0].velocity_rad_s - 0.5) < 0.01;
+    }));
     // Set_Input_Vel in motor turns/s: 0.5 rad/s × 10 turns per turn / 2π.
     const auto received = rig.pan.received();
     const auto last = std::find_if(received.rbegin(), received.rend(), [](const auto& r) {
@@ -67,13 +69,13 @@ TEST_CASE("odrive: velocity and position commands move the axes through the gear
     });
     REQUIRE(last != received.rend());
     CHECK(can::get_f32(last->frame, 0) == Approx(0.5 * 10 / (2 * M_PI)).epsilon(1e-5));
-    CHECK(rig.state.axes[0].velocity_rad_s == Approx(0.5).margin(0.01));
-    REQUIRE(rig.run_until(positions(0.3, 0.2), 2.0, [&] {
+    REQUIRE(rig.run_until(positions(0.3, 0.2), [&] {
         return std::abs(rig.pan.position_rad() - 0.3) < 1e-3 && std::abs(rig.tilt.position_rad() - 0.2) < 1e-3;
     }));
     CHECK(has(commands_received(rig.pan), Cmd::SetInputPos));
-    CHECK(rig.run(positions(0.3, 0.2), 0.05));
-    CHECK(rig.state.axes[0].position_rad == Approx(0.3).margin(1e-3));
+    CHECK(rig.run_until(positions(0.3, 0.2), [&] {
+        return rig.status.ok && std::abs(rig.state.axes[0].position_rad - 0.3) < 1e-3;
+    }));
     rig.driver->deactivate();
 }
 
@@ -82,15 +84,15 @@ TEST_CASE("odrive: an axis error stops the other axis, clears once its cause is 
     bring_up(rig);
     CHECK(rig.run(velocities(0.4, 0.4), 0.2));
     rig.tilt.inject_error(0x00000100);  // e.g. MOTOR_FAILED
-    REQUIRE(rig.run_until(velocities(0.4, 0.4), 1.0, [&] { return !rig.status.ok; }));
+    REQUIRE(rig.run_until(velocities(0.4, 0.4), [&] { return !rig.status.ok; }));
     CHECK(contains(rig.status, "tilt (node 1): axis error 0x00000100"));
-    CHECK(rig.run_until(velocities(0.4, 0.4), 1.0, [&] {
+    CHECK(rig.run_until(velocities(0.4, 0.4), [&] {
         return rig.pan.velocity_rad_s() == 0.0 && rig.tilt.velocity_rad_s() == 0.0;
     }));
-    CHECK(rig.run_until(velocities(0.4, 0.4), 1.0, [&] { return rig.state.axes[1].fault; }));
+    CHECK(rig.run_until(velocities(0.4, 0.4), [&] { return rig.state.axes[1].fault; }));
     rig.tilt.clear_fault();
-    REQUIRE(rig.run_until(velocities(0.4, 0.4), 3.0, [&] { return rig.status.ok && rig.state.axes[1].enabled; }));
-    CHECK(rig.run_until(velocities(0.4, 0.4), 1.0, [&] {
+    REQUIRE(rig.run_until(velocities(0.4, 0.4), [&] { return rig.status.ok && rig.state.axes[1].enabled; }));
+    CHECK(rig.run_until(velocities(0.4, 0.4), [&] {
         return std::abs(rig.pan.velocity_rad_s() - 0.4) < 1e-3 && std::abs(rig.tilt.velocity_rad_s() - 0.4) < 1e-3;
     }));
     rig.driver->deactivate();
@@ -101,12 +103,12 @@ TEST_CASE("odrive: a lost heartbeat is a fault, both axes stop, and it recovers 
     bring_up(rig);
     CHECK(rig.run(velocities(0.4, 0.4), 0.2));
     rig.pan.stop_heartbeat(true);
-    REQUIRE(rig.run_until(velocities(0.4, 0.4), 1.0, [&] { return !rig.status.ok; }));
+    REQUIRE(rig.run_until(velocities(0.4, 0.4), [&] { return !rig.status.ok; }));
     CHECK(contains(rig.status, "pan (node 0): heartbeat lost"));
-    CHECK(rig.run_until(velocities(0.4, 0.4), 1.0, [&] { return rig.tilt.velocity_rad_s() == 0.0; }));
+    CHECK(rig.run_until(velocities(0.4, 0.4), [&] { return rig.tilt.velocity_rad_s() == 0.0; }));
     rig.pan.stop_heartbeat(false);
-    REQUIRE(rig.run_until(velocities(0.4, 0.4), 3.0, [&] { return rig.status.ok && rig.state.axes[0].enabled; }));
-    CHECK(rig.run_until(velocities(0.4, 0.4), 1.0, [&] { return std::abs(rig.pan.velocity_rad_s() - 0.4) < 1e-3; }));
+    REQUIRE(rig.run_until(velocities(0.4, 0.4), [&] { return rig.status.ok && rig.state.axes[0].enabled; }));
+    CHECK(rig.run_until(velocities(0.4, 0.4), [&] { return std::abs(rig.pan.velocity_rad_s() - 0.4) < 1e-3; }));
     rig.driver->deactivate();
 }
 
@@ -115,13 +117,14 @@ TEST_CASE("odrive: when raysd stops sending (killed), the ODrive watchdog idles 
     bring_up(rig);
     CHECK(rig.run(velocities(0.5, 0.5), 0.2));
     rig.driver_end.mute(true);
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    CHECK(rays::test::eventually([&] {
+        return rig.pan.axis_state() == kAxisIdle && rig.pan.velocity_rad_s() == 0.0 && rig.tilt.velocity_rad_s() == 0.0;
+    }));
     CHECK((rig.pan.axis_error() & kErrorWatchdogExpired) != 0);
-    CHECK(rig.pan.axis_state() == kAxisIdle);
-    CHECK(rig.pan.velocity_rad_s() == 0.0);
-    CHECK(rig.tilt.velocity_rad_s() == 0.0);
     // The driver sees the watchdog error in the heartbeat and says so.
-    CHECK(contains(rig.driver->read(rig.state, rig.clock.now()), "watchdog expired"));
+    CHECK(rays::test::eventually([&] {
+        return contains(rig.driver->read(rig.state, rig.clock.now()), "watchdog expired");
+    }));
     rig.driver_end.mute(false);
     rig.driver->deactivate();
 }
@@ -130,9 +133,8 @@ TEST_CASE("odrive: a stale command stream stops the axes", "[odrive]") {
     OdriveRig rig;
     bring_up(rig);
     CHECK(rig.run(velocities(0.5, 0.5), 0.2));
-    std::this_thread::sleep_for(std::chrono::milliseconds(600));
-    CHECK(rig.pan.velocity_rad_s() == 0.0);
-    CHECK(rig.tilt.velocity_rad_s() == 0.0);
+    // No write() from here: after command_timeout_s (0.3 s) the driver stops the axes by itself.
+    CHECK(rays::test::eventually([&] { return rig.pan.velocity_rad_s() == 0.0 && rig.tilt.velocity_rad_s() == 0.0; }));
     CHECK(rig.pan.axis_state() == kAxisClosedLoop);  // held at zero velocity, watchdog still fed
     rig.driver->deactivate();
 }
@@ -151,14 +153,14 @@ TEST_CASE("odrive: bus-off is a fault and all recovers when the bus is back", "[
     bring_up(rig);
     CHECK(rig.run(velocities(0.3, 0.3), 0.2));
     rig.bus.set_bus_off(true);
-    REQUIRE(rig.run_until(velocities(0.3, 0.3), 1.0, [&] { return !rig.status.ok; }));
+    REQUIRE(rig.run_until(velocities(0.3, 0.3), [&] { return !rig.status.ok; }));
     CHECK(contains(rig.status, "CAN bus-off"));
-    CHECK(rig.run_until(velocities(0.3, 0.3), 1.0, [&] { return rig.pan.velocity_rad_s() == 0.0; }));
+    CHECK(rig.run_until(velocities(0.3, 0.3), [&] { return rig.pan.velocity_rad_s() == 0.0; }));
     rig.bus.set_bus_off(false);
-    REQUIRE(rig.run_until(velocities(0.3, 0.3), 4.0, [&] {
+    REQUIRE(rig.run_until(velocities(0.3, 0.3), [&] {
         return rig.status.ok && rig.state.axes[0].enabled && rig.state.axes[1].enabled;
     }));
-    CHECK(rig.run_until(velocities(0.3, 0.3), 1.0, [&] { return std::abs(rig.pan.velocity_rad_s() - 0.3) < 1e-3; }));
+    CHECK(rig.run_until(velocities(0.3, 0.3), [&] { return std::abs(rig.pan.velocity_rad_s() - 0.3) < 1e-3; }));
     rig.driver->deactivate();
 }
 
@@ -180,7 +182,9 @@ TEST_CASE("odrive: raysd --stop-axes (configure, stop, deactivate) idles an axis
     auto settings = rays::test::fast_odrive_settings();
     OdriveRig rig(settings, 5.0);  // a long ODrive watchdog: the stop must come from the stopper
     bring_up(rig);
-    CHECK(rig.run(velocities(0.5, 0.5), 0.2));
+    REQUIRE(rig.run_until(velocities(0.5, 0.5), [&] {
+        return rig.status.ok && std::abs(rig.pan.velocity_rad_s() - 0.5) < 1e-3;
+    }));
     rig.driver_end.mute(true);  // killed: its last frames never arrive
     rig.driver.reset();
     REQUIRE(rig.pan.velocity_rad_s() == Approx(0.5).margin(1e-3));

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "drivers/ptu_driver.hpp"
+#include "support/eventually.hpp"
 
 extern char** environ;
 
@@ -119,16 +120,6 @@ inline std::vector<Received> read_record(const std::string& path) {
         rows.push_back(r);
     }
     return rows;
-}
-
-template <class Predicate>
-bool eventually(Predicate predicate, double seconds) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < end) {
-        if (predicate()) return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return predicate();
 }
 
 inline ptu::PtuCommand velocities(double pan, double tilt) {

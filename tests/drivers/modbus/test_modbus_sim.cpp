@@ -43,6 +43,14 @@ bool stopped(SimProcess& sim) {
     return s.velocity[0] == 0.0 && s.velocity[1] == 0.0;
 }
 
+// Writes `command` until the unit moves, however long a loaded machine takes; true when it does.
+bool drive_until_moving(Rig& rig, const ptu::PtuCommand& command) {
+    return eventually([&] {
+        rig.driver->write(command, rig.clock.now());
+        return moving(*rig.sim);
+    });
+}
+
 // A zero velocity (or a drive-side stop) received for both axes at or after `after_s`.
 bool stop_received(const std::vector<Received>& rows, double after_s) {
     bool zero[2] = {false, false};
@@ -63,17 +71,18 @@ void move_and_check(Rig& rig) {
     REQUIRE(up);
     const double start = monotonic_seconds();
     CHECK(drive(*rig.driver, velocities(0.5, -0.25), 0.4).ok);
-    CHECK(moving(*rig.sim));
+    ptu::PtuState state;
+    CHECK(eventually([&] {  // moving, and far enough for the driver to read the travel back
+        rig.driver->write(velocities(0.5, -0.25), rig.clock.now());
+        return moving(*rig.sim) && rig.driver->read(state, MonoClock::now()).ok && state.axes[0].position_rad > 0.05 &&
+               state.axes[1].position_rad < -0.02;
+    }));
     std::int32_t pan = 0, tilt = 0;
     const auto rows = rig.received();
     REQUIRE(last_value32(rows, 1, 0, start, pan));
     REQUIRE(last_value32(rows, 2, 0, start, tilt));
     CHECK(pan == 500);  // 0.5 rad/s × 1000 counts per rad/s
     CHECK(tilt == -250);
-    ptu::PtuState state;
-    CHECK(rig.driver->read(state, MonoClock::now()).ok);
-    CHECK(state.axes[0].position_rad > 0.05);
-    CHECK(state.axes[1].position_rad < -0.02);
     CHECK(state.axes[0].enabled);
 }
 
@@ -91,7 +100,7 @@ TEST_CASE("modbus tcp: commands reach the unit and move it", "[modbus]") {
     CHECK(watchdog);
     CHECK(enabled);
     rig.driver->deactivate();
-    CHECK(eventually([&] { return stopped(*rig.sim); }, 0.5));
+    CHECK(eventually([&] { return stopped(*rig.sim); }));
 }
 
 TEST_CASE("modbus rtu over a pty pair: commands reach the unit and move it", "[modbus]") {
@@ -103,8 +112,7 @@ TEST_CASE("modbus rtu over a pty pair: commands reach the unit and move it", "[m
 TEST_CASE("modbus preset leadshine-eld2: PR0 velocity mode, speed and trigger per slave", "[modbus]") {
     Rig rig("eld2", "tcp", "preset = leadshine-eld2\npan_velocity_counts_per_rad_s = 100\ntilt_velocity_counts_per_rad_s = 100\n");
     REQUIRE(rig.up());
-    drive(*rig.driver, velocities(0.5, 0.3), 0.3);
-    CHECK(moving(*rig.sim));
+    CHECK(drive_until_moving(rig, velocities(0.5, 0.3)));
     bool mode[2] = {}, speed[2] = {}, trigger[2] = {};
     for (const Received& r : rig.received()) {
         if (r.slave < 1 || r.slave > 2) continue;
@@ -118,8 +126,7 @@ TEST_CASE("modbus preset leadshine-eld2: PR0 velocity mode, speed and trigger pe
 TEST_CASE("modbus preset uumotor-svd48v: both motors of one slave enabled and driven", "[modbus]") {
     Rig rig("svd48v", "tcp", "preset = uumotor-svd48v\npan_velocity_counts_per_rad_s = 100\ntilt_velocity_counts_per_rad_s = 100\n");
     REQUIRE(rig.up());
-    drive(*rig.driver, velocities(0.4, -0.2), 0.3);
-    CHECK(moving(*rig.sim));
+    CHECK(drive_until_moving(rig, velocities(0.4, -0.2)));
     bool enable[2] = {}, speed[2] = {};
     for (const Received& r : rig.received()) {
         if (r.slave != 1) continue;
@@ -130,8 +137,10 @@ TEST_CASE("modbus preset uumotor-svd48v: both motors of one slave enabled and dr
     }
     CHECK((enable[0] && enable[1] && speed[0] && speed[1]));
     ptu::PtuState state;
-    CHECK(rig.driver->read(state, MonoClock::now()).ok);
-    CHECK(state.axes[0].position_rad > 0.0);
+    CHECK(eventually([&] {  // the travel read back
+        rig.driver->write(velocities(0.4, -0.2), rig.clock.now());
+        return rig.driver->read(state, MonoClock::now()).ok && state.axes[0].position_rad > 0.0;
+    }));
 }
 
 TEST_CASE("modbus faults stop the axes, say so and recover", "[modbus]") {
@@ -153,7 +162,7 @@ TEST_CASE("modbus faults stop the axes, say so and recover", "[modbus]") {
             Rig rig(std::string("fault_") + std::to_string(&c - cases), "tcp", custom_map_ini());
             REQUIRE(rig.up());
             CHECK(drive(*rig.driver, velocities(0.5, 0.5), 0.3).ok);
-            REQUIRE(moving(*rig.sim));
+            REQUIRE(drive_until_moving(rig, velocities(0.5, 0.5)));
             const double injected = monotonic_seconds();
             rig.sim->send(c.inject);
             ptu::DriverStatus status;
@@ -162,11 +171,11 @@ TEST_CASE("modbus faults stop the axes, say so and recover", "[modbus]") {
                 rig.driver->write(velocities(0.5, 0.5), clock.now());
                 status = read_status(*rig.driver);
                 return !status.ok;
-            }, 3.0));
+            }));
             INFO(status.what());
             CHECK(std::strstr(status.what(), c.message) != nullptr);
             // Stopped: zero velocity received for both axes, or the unit's own watchdog stopped them.
-            CHECK(eventually([&] { return stopped(*rig.sim); }, 2.0));
+            CHECK(eventually([&] { return stopped(*rig.sim); }));
             if (std::strcmp(c.inject, "drop on") != 0 && std::strcmp(c.inject, "disconnect on") != 0)
                 CHECK(stop_received(rig.received(), injected));
             rig.sim->send(c.clear);
@@ -174,9 +183,8 @@ TEST_CASE("modbus faults stop the axes, say so and recover", "[modbus]") {
             CHECK(eventually([&] {
                 rig.driver->write(velocities(0.5, 0.5), clock.now());
                 return read_status(*rig.driver).ok;
-            }, 6.0));
-            drive(*rig.driver, velocities(0.5, 0.5), 0.3);
-            CHECK(moving(*rig.sim));
+            }));
+            CHECK(drive_until_moving(rig, velocities(0.5, 0.5)));
             std::int32_t pan = 0;
             CHECK((last_value32(rig.received(), 1, 0, cleared, pan) && pan == 500));
         }
@@ -186,10 +194,13 @@ TEST_CASE("modbus faults stop the axes, say so and recover", "[modbus]") {
 TEST_CASE("modbus: a stale command stream stops the axes", "[modbus]") {
     Rig rig("stale", "tcp", custom_map_ini(0));  // no drive-side watchdog: the driver alone
     REQUIRE(rig.up());
-    drive(*rig.driver, velocities(0.5, 0.5), 0.2);
-    REQUIRE(moving(*rig.sim));
-    const double last_write = monotonic_seconds();
-    CHECK(eventually([&] { return stopped(*rig.sim); }, 1.5));
+    double last_write = 0;
+    REQUIRE(eventually([&] {
+        last_write = monotonic_seconds();
+        rig.driver->write(velocities(0.5, 0.5), rig.clock.now());
+        return moving(*rig.sim);
+    }));
+    CHECK(eventually([&] { return stopped(*rig.sim); }));
     const double stopped_at = monotonic_seconds();
     CHECK(stop_received(rig.received(), last_write));
     CHECK(stopped_at - last_write > 0.25);  // command_timeout_ms = 300, less the ramp
@@ -210,11 +221,11 @@ TEST_CASE("modbus: the drive's watchdog stops the axes after the driver is kille
             usleep(20000);
         }
     }
-    REQUIRE(eventually([&] { return moving(*rig.sim); }, 3.0));
+    REQUIRE(eventually([&] { return moving(*rig.sim); }));
     kill(child, SIGKILL);
     waitpid(child, nullptr, 0);
     const double killed = monotonic_seconds();
-    CHECK(eventually([&] { return stopped(*rig.sim); }, 2.0));
+    CHECK(eventually([&] { return stopped(*rig.sim); }));
     bool tripped = false;
     for (const Received& r : rig.received()) tripped = tripped || (r.note == "watchdog_stop" && r.time_s >= killed);
     CHECK(tripped);

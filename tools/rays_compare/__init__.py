@@ -1,0 +1,1 @@
+"""rays-compare: the Active Rays tracker beside OpenCV trackers on sequences with ground truth (tools/rays-compare)."""

@@ -19,8 +19,11 @@ bool FrameConverter::configure(const FrameLayout& layout, io::Crop crop, std::st
         case PixelFormat::Yuyv:
             raw_bytes_ = pitch * static_cast<std::size_t>(layout.height - 1) + 2 * static_cast<std::size_t>(layout.width);
             luma_.assign(static_cast<std::size_t>(crop_.w) * static_cast<std::size_t>(crop_.h), 0);
+            u_.assign(static_cast<std::size_t>(chroma_width()) * static_cast<std::size_t>(layout.height), 128);
+            v_.assign(u_.size(), 128);
             scaler_ = io::AreaScaler::make(crop_.w, crop_.h, io::Crop{}, error);
-            return scaler_.has_value();
+            chroma_ = io::ChromaScaler::make(layout.width, layout.height, chroma_width(), layout.height, crop_, error);
+            return scaler_.has_value() && chroma_.has_value();
         case PixelFormat::Mjpeg: return configure_mjpeg(crop_, error);
     }
     return false;
@@ -36,9 +39,11 @@ bool FrameConverter::configure_mjpeg(io::Crop crop, std::string& error) {
     const int x1 = std::min(decoded_w, (crop.x + crop.w + d - 1) / d);
     const int y1 = std::min(decoded_h, (crop.y + crop.h + d - 1) / d);
     jpeg_.configure(layout_.width, layout_.height, d, y1);
-    scaler_ = io::AreaScaler::make(decoded_w, decoded_h, io::Crop{x0, y0, x1 - x0, y1 - y0}, error);
+    const io::Crop decoded_crop{x0, y0, x1 - x0, y1 - y0};
+    scaler_ = io::AreaScaler::make(decoded_w, decoded_h, decoded_crop, error);
+    chroma_ = io::ChromaScaler::make(decoded_w, decoded_h, decoded_w, decoded_h, decoded_crop, error);
     set_mapping(io::Crop{x0 * d, y0 * d, (x1 - x0) * d, (y1 - y0) * d});
-    return scaler_.has_value();
+    return scaler_.has_value() && chroma_.has_value();
 }
 
 // As AreaScaler's convention: scale = crop / 128, offset = crop origin + (scale − 1) / 2.
@@ -49,8 +54,11 @@ void FrameConverter::set_mapping(io::Crop source_crop) {
     mapping_.offset_y = source_crop.y + (mapping_.scale_y - 1.0) / 2.0;
 }
 
-bool FrameConverter::convert(const std::uint8_t* data, std::size_t bytes, GreyImage& out) {
+int FrameConverter::chroma_width() const { return (layout_.width + 1) / 2; }
+
+bool FrameConverter::convert(const std::uint8_t* data, std::size_t bytes, GreyImage& out, Chroma& chroma) {
     failure_ = "";
+    chroma.present = false;
     switch (layout_.format) {
         case PixelFormat::Grey:
             if (bytes < raw_bytes_) break;
@@ -58,12 +66,9 @@ bool FrameConverter::convert(const std::uint8_t* data, std::size_t bytes, GreyIm
             return true;
         case PixelFormat::Yuyv: {
             if (bytes < raw_bytes_) break;
-            for (int r = 0; r < crop_.h; ++r) {  // Y0 U Y1 V: luma in every even byte
-                const std::uint8_t* src = data + static_cast<std::ptrdiff_t>(crop_.y + r) * layout_.bytes_per_line + 2 * crop_.x;
-                std::uint8_t* dst = luma_.data() + static_cast<std::ptrdiff_t>(r) * crop_.w;
-                for (int i = 0; i < crop_.w; ++i) dst[i] = src[2 * i];
-            }
+            split_yuyv(data);
             scaler_->scale(luma_.data(), crop_.w, out);
+            chroma_->scale(u_.data(), v_.data(), chroma_width(), chroma);
             return true;
         }
         case PixelFormat::Mjpeg:
@@ -72,10 +77,30 @@ bool FrameConverter::convert(const std::uint8_t* data, std::size_t bytes, GreyIm
                 return false;
             }
             scaler_->scale(jpeg_.luma(), jpeg_.decoded_width(), out);
+            if (jpeg_.colour()) chroma_->scale(jpeg_.cb(), jpeg_.cr(), jpeg_.decoded_width(), chroma);
             return true;
     }
     failure_ = "short frame";
     return false;
+}
+
+// Y0 U Y1 V: the crop's luma (every even byte) into luma_, and the chroma pairs its rows touch into u_
+// and v_ at their place in the half-width planes.
+void FrameConverter::split_yuyv(const std::uint8_t* data) {
+    const int first_pair = crop_.x / 2, end_pair = (crop_.x + crop_.w + 1) / 2;
+    const auto cw = static_cast<std::ptrdiff_t>(chroma_width());
+    for (int r = 0; r < crop_.h; ++r) {
+        const std::uint8_t* line = data + static_cast<std::ptrdiff_t>(crop_.y + r) * layout_.bytes_per_line;
+        const std::uint8_t* src = line + 2 * crop_.x;
+        std::uint8_t* dst = luma_.data() + static_cast<std::ptrdiff_t>(r) * crop_.w;
+        for (int i = 0; i < crop_.w; ++i) dst[i] = src[2 * i];
+        std::uint8_t* u = u_.data() + (crop_.y + r) * cw;
+        std::uint8_t* v = v_.data() + (crop_.y + r) * cw;
+        for (int p = first_pair; p < end_pair; ++p) {
+            u[p] = line[4 * p + 1];
+            v[p] = line[4 * p + 3];
+        }
+    }
 }
 
 }  // namespace rays::capture

@@ -43,7 +43,11 @@ void MjpegDecoder::configure(int width, int height, int scale_denom, int rows_ne
     decoded_width_ = (width + scale_denom - 1) / scale_denom;  // as libjpeg rounds
     decoded_height_ = (height + scale_denom - 1) / scale_denom;
     rows_needed_ = rows_needed;
-    luma_.assign(static_cast<std::size_t>(decoded_width_) * static_cast<std::size_t>(rows_needed_), 0);
+    const std::size_t plane = static_cast<std::size_t>(decoded_width_) * static_cast<std::size_t>(rows_needed_);
+    luma_.assign(plane, 0);
+    cb_.assign(plane, 128);
+    cr_.assign(plane, 128);
+    ycc_row_.assign(3 * static_cast<std::size_t>(decoded_width_), 0);
 }
 
 bool MjpegDecoder::fail(const char* why) {
@@ -64,15 +68,25 @@ bool MjpegDecoder::decode(const std::uint8_t* data, std::size_t size) {
     if (jpeg_read_header(&jpeg_, TRUE) != JPEG_HEADER_OK) return fail("no image in the JPEG data");
     if (static_cast<int>(jpeg_.image_width) != width_ || static_cast<int>(jpeg_.image_height) != height_)
         return fail("JPEG frame size differs from the negotiated size");
-    jpeg_.out_color_space = JCS_GRAYSCALE;
+    colour_ = jpeg_.jpeg_color_space == JCS_YCbCr && jpeg_.num_components == 3;
+    jpeg_.out_color_space = colour_ ? JCS_YCbCr : JCS_GRAYSCALE;
+    jpeg_.do_fancy_upsampling = FALSE;
     jpeg_.scale_num = 1;
     jpeg_.scale_denom = static_cast<unsigned int>(scale_denom_);
     jpeg_start_decompress(&jpeg_);
-    if (static_cast<int>(jpeg_.output_width) != decoded_width_ || jpeg_.output_components != 1)
+    if (static_cast<int>(jpeg_.output_width) != decoded_width_ || jpeg_.output_components != (colour_ ? 3 : 1))
         return fail("unexpected decoded layout");
+    const auto w = static_cast<std::size_t>(decoded_width_);
     while (static_cast<int>(jpeg_.output_scanline) < rows_needed_) {
-        JSAMPROW row = luma_.data() + static_cast<std::size_t>(jpeg_.output_scanline) * static_cast<std::size_t>(decoded_width_);
+        const std::size_t at = static_cast<std::size_t>(jpeg_.output_scanline) * w;
+        JSAMPROW row = colour_ ? ycc_row_.data() : luma_.data() + at;
         jpeg_read_scanlines(&jpeg_, &row, 1);
+        if (!colour_) continue;
+        for (std::size_t x = 0; x < w; ++x) {
+            luma_[at + x] = ycc_row_[3 * x];
+            cb_[at + x] = ycc_row_[3 * x + 1];
+            cr_[at + x] = ycc_row_[3 * x + 2];
+        }
     }
     if (jpeg_.output_scanline < jpeg_.output_height) jpeg_abort_decompress(&jpeg_);  // rows below the crop
     else jpeg_finish_decompress(&jpeg_);

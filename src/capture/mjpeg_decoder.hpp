@@ -1,6 +1,7 @@
-// The luma of MJPEG frames through libjpeg-turbo, decoded at a reduced DCT scale 1/d: the IDCT then
-// yields d× smaller blocks directly and the chroma planes are never decoded. libjpeg-turbo allocates
-// inside each decode, so this runs on the capture side, not in the frame loop.
+// MJPEG frames through libjpeg-turbo, decoded at a reduced DCT scale 1/d (the IDCT then yields d×
+// smaller blocks directly): the luma and, for a colour JPEG, Cb and Cr at the decoded luma's size
+// (libjpeg's plain replicating upsampling; they are area-averaged to 64×64 afterwards anyway).
+// libjpeg-turbo allocates inside each decode, so this runs on the capture side, not in the frame loop.
 #pragma once
 #include <csetjmp>
 #include <cstddef>
@@ -24,14 +25,17 @@ public:
     MjpegDecoder& operator=(const MjpegDecoder&) = delete;
 
     // Frames will be width × height; decode at 1/scale_denom and stop after the first rows_needed
-    // decoded rows. Sizes the luma buffer (the only allocation outside libjpeg).
+    // decoded rows. Sizes the planes' buffers (the only allocations outside libjpeg).
     void configure(int width, int height, int scale_denom, int rows_needed);
 
-    // Decodes one frame's luma. False when the data is not a clean JPEG of the configured size
+    // Decodes one frame's luma (and chroma, where it has colour). False when the data is not a clean JPEG of the configured size
     // (libjpeg's warnings, e.g. a truncated frame, count as unclean); failure() then says why.
     bool decode(const std::uint8_t* data, std::size_t size);
 
     const std::uint8_t* luma() const { return luma_.data(); }  // rows of decoded_width() bytes
+    bool colour() const { return colour_; }                    // the last frame had Cb and Cr
+    const std::uint8_t* cb() const { return cb_.data(); }      // as luma(), while colour()
+    const std::uint8_t* cr() const { return cr_.data(); }
     int decoded_width() const { return decoded_width_; }
     int decoded_height() const { return decoded_height_; }
     int scale_denom() const { return scale_denom_; }
@@ -57,6 +61,10 @@ private:
     int decoded_width_ = 0;
     int decoded_height_ = 0;
     std::vector<std::uint8_t> luma_;
+    std::vector<std::uint8_t> cb_;
+    std::vector<std::uint8_t> cr_;
+    std::vector<std::uint8_t> ycc_row_;  // one decoded row, Y Cb Cr interleaved
+    bool colour_ = false;
 };
 
 }  // namespace rays::capture

@@ -132,7 +132,7 @@ int V4l2Camera::milliseconds_until(TimePoint deadline) const {
     return static_cast<int>(std::clamp<decltype(left)>(left, 0, INT_MAX));
 }
 
-CaptureResult V4l2Camera::next(GreyImage& out, FrameInfo& info, std::chrono::milliseconds timeout) {
+CaptureResult V4l2Camera::next(GreyImage& out, Chroma& chroma, FrameInfo& info, std::chrono::milliseconds timeout) {
     const TimePoint deadline = clock_.now() + timeout;
     if (state_ == State::Lost && !reopen(deadline)) return CaptureResult::Reconnecting;
     if (state_ != State::Streaming) return CaptureResult::Error;
@@ -150,20 +150,20 @@ CaptureResult V4l2Camera::next(GreyImage& out, FrameInfo& info, std::chrono::mil
             if (clock_.now() >= deadline) return CaptureResult::Timeout;
             continue;
         }
-        const bool delivered = take_frame(buffer, out, info);
+        const bool delivered = take_frame(buffer, out, chroma, info);
         if (ioctl_retrying(device_, fd_, VIDIOC_QBUF, &buffer) == -1) return lose(call_failed("VIDIOC_QBUF"));
         if (delivered) return CaptureResult::Frame;
     }
 }
 
 // Converts a dequeued buffer; false (and counted) when it holds no usable frame.
-bool V4l2Camera::take_frame(const v4l2_buffer& buffer, GreyImage& out, FrameInfo& info) {
+bool V4l2Camera::take_frame(const v4l2_buffer& buffer, GreyImage& out, Chroma& chroma, FrameInfo& info) {
     count_sequence(buffer.sequence);
     const char* failure = nullptr;
     if (buffer.index >= static_cast<std::uint32_t>(buffers_.count())) failure = "buffer index out of range";
     else if ((buffer.flags & V4L2_BUF_FLAG_ERROR) != 0) failure = "the driver flagged the buffer as damaged";
     else if (!converter_.convert(buffers_.data(buffer.index),
-                                 std::min<std::size_t>(buffer.bytesused, buffers_.length(buffer.index)), out))
+                                 std::min<std::size_t>(buffer.bytesused, buffers_.length(buffer.index)), out, chroma))
         failure = converter_.failure();
     if (failure != nullptr) {
         std::snprintf(last_corrupt_, sizeof last_corrupt_, "%s", failure);

@@ -64,9 +64,10 @@ public:
     // Opens the device, negotiates the format and starts streaming. Reopens when already open.
     OpenResult open();
 
-    // Waits up to timeout for the next frame and scales it into out. Corrupt frames are skipped and
-    // counted. While the device is away, waits for and makes the next reopen attempt.
-    CaptureResult next(GreyImage& out, FrameInfo& info, std::chrono::milliseconds timeout);
+    // Waits up to timeout for the next frame and scales it into out (the luma) and chroma (present for
+    // YUYV and colour MJPEG). Corrupt frames are skipped and counted. While the device is away, waits
+    // for and makes the next reopen attempt.
+    CaptureResult next(GreyImage& out, Chroma& chroma, FrameInfo& info, std::chrono::milliseconds timeout);
 
     // One line, e.g. "streaming 640x480 MJPEG (scale 1/2) 30 fps" or
     // "disconnected: /dev/video0: VIDIOC_DQBUF: ENODEV, retry in 2.0 s".
@@ -97,7 +98,7 @@ private:
     CaptureResult lose(const DeviceError& reason);
     void schedule_retry(std::chrono::milliseconds delay);
     bool reopen(TimePoint deadline);
-    bool take_frame(const v4l2_buffer& buffer, GreyImage& out, FrameInfo& info);
+    bool take_frame(const v4l2_buffer& buffer, GreyImage& out, Chroma& chroma, FrameInfo& info);
     void count_sequence(std::uint32_t sequence);
     int milliseconds_until(TimePoint deadline) const;
 

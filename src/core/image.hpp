@@ -21,6 +21,21 @@ struct Plane {
 using GreyImage = Plane<std::uint8_t>;   // what a frame source delivers
 using FloatImage = Plane<float>;         // the smoothed image the rays sample
 
+// The frame's colour beside its luma, where the source has colour: Cb (u) and Cr (v), full-range
+// BT.601 as in JPEG (128 = no colour), each 64×64, chroma pixel (i, j) covering processing pixels
+// 2i..2i+1 × 2j..2j+1 of the same crop. A mono source leaves `present` false.
+inline constexpr int kChromaSize = kFrameSize / 2;
+inline constexpr int kChromaPixels = kChromaSize * kChromaSize;
+
+struct Chroma {
+    std::array<std::uint8_t, kChromaPixels> u{};
+    std::array<std::uint8_t, kChromaPixels> v{};
+    bool present = false;
+
+    std::uint8_t u_at(int x, int y) const { return u[static_cast<std::size_t>(y * kChromaSize + x)]; }
+    std::uint8_t v_at(int x, int y) const { return v[static_cast<std::size_t>(y * kChromaSize + x)]; }
+};
+
 struct Point {
     double x = 0.0;
     double y = 0.0;

@@ -282,6 +282,7 @@ void FrameLoop::publish(TimePoint now, TimePoint step_start) {
             const Contour& contour = tracker_->contour();
             snap.frame = frame_.index;
             snap.image = frame_.image;
+            snap.chroma = frame_.chroma;
             snap.has_contour = telemetry_.has_contour;
             snap.ref = contour.ref;
             snap.points = telemetry_.has_contour ? std::min(contour.size, kMaxSnapshotPoints) : 0;

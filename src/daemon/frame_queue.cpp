@@ -22,6 +22,7 @@ FrameQueue::Push FrameQueue::push(const CapturedFrame& frame, bool wait_for_room
     }
     CapturedFrame& slot = slots_[static_cast<std::size_t>((head_ + count_) % capacity)];
     slot.image = frame.image;  // same fixed size: a copy, no allocation
+    slot.chroma = frame.chroma;
     slot.index = frame.index;
     slot.stamp = frame.stamp;
     ++count_;
@@ -37,6 +38,7 @@ bool FrameQueue::pop(CapturedFrame& out, std::chrono::nanoseconds timeout) {
     if (count_ == 0) return false;
     const CapturedFrame& slot = slots_[static_cast<std::size_t>(head_)];
     out.image = slot.image;
+    out.chroma = slot.chroma;
     out.index = slot.index;
     out.stamp = slot.stamp;
     head_ = (head_ + 1) % static_cast<int>(slots_.size());

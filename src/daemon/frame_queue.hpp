@@ -15,6 +15,7 @@ namespace rays::daemon {
 
 struct CapturedFrame {
     GreyImage image;
+    Chroma chroma;         // present where the source has colour
     long index = -1;       // the source's own frame number
     TimePoint stamp{};     // capture time on the monotonic clock
     TimePoint arrived{};   // when it reached raysd; the tracking budget counts from here (stamp when unset)

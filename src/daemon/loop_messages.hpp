@@ -96,6 +96,7 @@ constexpr int kMaxSnapshotPoints = 4096;  // the largest rays.max_rays allows
 struct SnapshotFrame {
     long frame = -1;
     GreyImage image;
+    Chroma chroma;  // present where the source has colour
     bool has_contour = false;
     Point ref;
     int points = 0;

@@ -28,14 +28,15 @@ std::unique_ptr<ReplaySource> ReplaySource::open(const CameraSettings& settings,
         return nullptr;
     }
     io::Crop crop{settings.crop_x, settings.crop_y, settings.crop_w, settings.crop_h};
-    std::optional<io::AreaScaler> scaler =
-        io::AreaScaler::make(opened.reader->width(), opened.reader->height(), crop, error);
+    std::optional<io::FrameScaler> scaler =
+        io::FrameScaler::make(opened.reader->width(), opened.reader->height(), opened.reader->chroma_width(),
+                              opened.reader->chroma_height(), crop, error);
     if (!scaler) return nullptr;
     return std::unique_ptr<ReplaySource>(new ReplaySource(settings, clock, std::move(opened.reader), *scaler));
 }
 
 ReplaySource::ReplaySource(const CameraSettings& settings, const Clock& clock, std::unique_ptr<io::FrameReader> reader,
-                           io::AreaScaler scaler)
+                           io::FrameScaler scaler)
     : settings_(settings),
       clock_(clock),
       reader_(std::move(reader)),
@@ -45,7 +46,8 @@ ReplaySource::ReplaySource(const CameraSettings& settings, const Clock& clock, s
 
 bool ReplaySource::rewind() {
     io::OpenResult opened = io::open_frames(settings_.replay_path);
-    if (!opened.reader || opened.reader->width() != reader_->width() || opened.reader->height() != reader_->height()) {
+    if (!opened.reader || opened.reader->width() != reader_->width() || opened.reader->height() != reader_->height() ||
+        opened.reader->chroma_width() != reader_->chroma_width() || opened.reader->chroma_height() != reader_->chroma_height()) {
         error_ = opened.reader ? settings_.replay_path + ": frame size changed" : opened.error;
         return false;
     }
@@ -76,7 +78,7 @@ FrameSource::Result ReplaySource::next(CapturedFrame& out, std::chrono::millisec
         error_ = reader_->error();
         return Result::Error;
     }
-    scaler_.scale(decoded_.grey.data(), decoded_.width, out.image);
+    scaler_.scale(decoded_, out.image, out.chroma);
     out.index = delivered_++;
     out.stamp = clock_.now();
     ++since_rewind_;

@@ -9,7 +9,7 @@
 #include "core/clock.hpp"
 #include "daemon/daemon_config.hpp"
 #include "daemon/frame_source.hpp"
-#include "io/area_scaler.hpp"
+#include "io/frame_scaler.hpp"
 #include "io/frame_reader.hpp"
 
 namespace rays::daemon {
@@ -27,13 +27,13 @@ public:
 
 private:
     ReplaySource(const CameraSettings& settings, const Clock& clock, std::unique_ptr<io::FrameReader> reader,
-                 io::AreaScaler scaler);
+                 io::FrameScaler scaler);
     bool rewind();
 
     CameraSettings settings_;
     const Clock& clock_;
     std::unique_ptr<io::FrameReader> reader_;
-    io::AreaScaler scaler_;
+    io::FrameScaler scaler_;
     io::SourceImage decoded_;
     double fps_;
     bool rewindable_;

@@ -256,13 +256,14 @@ json RequestHandler::snapshot() const {
     channels_.snapshot.read([&](const SnapshotFrame& latest) {
         snap.frame = latest.frame;
         snap.image = latest.image;
+        snap.chroma = latest.chroma;
         snap.has_contour = latest.has_contour;
         snap.ref = latest.ref;
         snap.points = latest.points;
         std::copy_n(latest.contour.begin(), latest.points, snap.contour.begin());
     });
     if (snap.frame < 0) return error("not_available", "no frame has been processed yet");
-    io::RgbCanvas canvas(snap.image, kSnapshotZoom);
+    io::RgbCanvas canvas(snap.image, snap.chroma, kSnapshotZoom);
     if (snap.has_contour) {
         canvas.polygon(std::vector<Point>(snap.contour.begin(), snap.contour.begin() + snap.points), {0, 255, 0});
         canvas.cross(snap.ref, 6, {255, 0, 0});

@@ -75,6 +75,7 @@ FrameSource::Result SimSource::next(CapturedFrame& out, std::chrono::millisecond
     const sim::Scenario& scenario = camera_->scenario();
     camera_->render(then.t_s, then.unit.pan + scenario.initial_pan_rad, then.unit.tilt + scenario.initial_tilt_rad, *view_);
     out.image = view_->image;
+    out.chroma.present = false;  // the simulated camera is grey
     out.stamp = due - delay_.stamp_lead(delivered_);
     out.index = delivered_++;
     return Result::Frame;

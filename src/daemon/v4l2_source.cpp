@@ -31,7 +31,7 @@ std::unique_ptr<V4l2Source> V4l2Source::open(const CameraSettings& settings, con
 }
 
 FrameSource::Result V4l2Source::next(CapturedFrame& out, std::chrono::milliseconds timeout) {
-    switch (camera_.next(out.image, info_, timeout)) {
+    switch (camera_.next(out.image, out.chroma, info_, timeout)) {
     case capture::CaptureResult::Frame:
         out.index = delivered_++;
         out.stamp = info_.timestamp;

@@ -22,6 +22,9 @@ public:
     virtual int height() const = 0;
     // Frames per second, 0 if unknown.
     virtual double fps() const = 0;
+    // The size of the frames' Cb and Cr planes; 0 for a mono source (then SourceImage has none).
+    virtual int chroma_width() const { return 0; }
+    virtual int chroma_height() const { return 0; }
 };
 
 struct OpenResult {

@@ -43,6 +43,33 @@ void RgbCanvas::set_image(const GreyImage& img) {
     }
 }
 
+RgbCanvas::RgbCanvas(const GreyImage& img, const Chroma& chroma, int zoom)
+    : zoom_(std::max(1, zoom)), size_(kFrameSize * zoom_), rgb_(static_cast<std::size_t>(size_) * size_ * 3) {
+    set_image(img, chroma);
+}
+
+Rgb ycbcr_to_rgb(std::uint8_t y, std::uint8_t cb, std::uint8_t cr) {
+    const double b_ = cb - 128.0, r_ = cr - 128.0;
+    const auto clamp = [](double v) { return static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L)); };
+    return {clamp(y + 1.402 * r_), clamp(y - 0.344136 * b_ - 0.714136 * r_), clamp(y + 1.772 * b_)};
+}
+
+void RgbCanvas::set_image(const GreyImage& img, const Chroma& chroma) {
+    if (!chroma.present) return set_image(img);
+    for (int y = 0; y < size_; ++y) {
+        const int py = y / zoom_;
+        const std::uint8_t* src = img.row(py);
+        std::uint8_t* dst = &rgb_[static_cast<std::size_t>(y) * size_ * 3];
+        for (int x = 0; x < size_; ++x) {
+            const int px = x / zoom_;
+            const Rgb c = ycbcr_to_rgb(src[px], chroma.u_at(px / 2, py / 2), chroma.v_at(px / 2, py / 2));
+            dst[3 * x] = c.r;
+            dst[3 * x + 1] = c.g;
+            dst[3 * x + 2] = c.b;
+        }
+    }
+}
+
 void RgbCanvas::plot(int x, int y, Rgb c) {
     if (x < 0 || y < 0 || x >= size_ || y >= size_) return;
     std::uint8_t* px = &rgb_[(static_cast<std::size_t>(y) * size_ + x) * 3];

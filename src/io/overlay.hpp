@@ -15,12 +15,18 @@ struct Rgb {
     std::uint8_t b = 0;
 };
 
+// Full-range BT.601 (JPEG's, and the realset's C420jpeg) Y Cb Cr to RGB.
+Rgb ycbcr_to_rgb(std::uint8_t y, std::uint8_t cb, std::uint8_t cr);
+
 class RgbCanvas {
 public:
     RgbCanvas(const GreyImage& img, int zoom);  // zoom below 1 is taken as 1
+    // In colour where `chroma` is present (each chroma pixel colours its 2×2 processing pixels).
+    RgbCanvas(const GreyImage& img, const Chroma& chroma, int zoom);
 
     // Repaints the canvas with a new frame, keeping its buffer.
     void set_image(const GreyImage& img);
+    void set_image(const GreyImage& img, const Chroma& chroma);
 
     // Drawing clips to the canvas; points that are not finite draw nothing.
     void line(Point a, Point b, Rgb c);

@@ -73,19 +73,27 @@ std::size_t Y4mHeader::luma_bytes() const {
 
 // Chroma planes are subsampled with rounding up: a 5-wide 4:2:0 frame has 3-wide chroma rows.
 std::size_t Y4mHeader::chroma_bytes() const {
-    const std::size_t w = static_cast<std::size_t>(width);
-    const std::size_t h = static_cast<std::size_t>(height);
-    const std::size_t half_w = (w + 1) / 2;
+    const std::size_t planes = 2 * static_cast<std::size_t>(chroma_width()) * static_cast<std::size_t>(chroma_height());
+    if (colour == Y4mColour::C444Alpha) return planes + static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    return planes;
+}
+
+int Y4mHeader::chroma_width() const {
     switch (colour) {
         case Y4mColour::Mono:
         case Y4mColour::Mono16: return 0;
-        case Y4mColour::C420: return 2 * half_w * ((h + 1) / 2);
-        case Y4mColour::C411: return 2 * ((w + 3) / 4) * h;
-        case Y4mColour::C422: return 2 * half_w * h;
-        case Y4mColour::C444: return 2 * w * h;
-        case Y4mColour::C444Alpha: return 3 * w * h;
+        case Y4mColour::C420:
+        case Y4mColour::C422: return (width + 1) / 2;
+        case Y4mColour::C411: return (width + 3) / 4;
+        case Y4mColour::C444:
+        case Y4mColour::C444Alpha: return width;
     }
     return 0;
+}
+
+int Y4mHeader::chroma_height() const {
+    if (chroma_width() == 0) return 0;
+    return colour == Y4mColour::C420 ? (height + 1) / 2 : height;
 }
 
 bool parse_y4m_header(std::string_view line, Y4mHeader& out, std::string& error) {

@@ -21,7 +21,9 @@ struct Y4mHeader {
 
     double fps() const;
     std::size_t luma_bytes() const;    // bytes of the Y plane in one frame
-    std::size_t chroma_bytes() const;  // bytes after the Y plane (Cb, Cr, alpha) that we skip
+    std::size_t chroma_bytes() const;  // bytes after the Y plane (Cb, Cr, alpha)
+    int chroma_width() const;          // of the Cb and Cr planes; 0 for mono
+    int chroma_height() const;
     std::size_t frame_bytes() const { return luma_bytes() + chroma_bytes(); }
 };
 

@@ -10,7 +10,7 @@ namespace {
 
 constexpr std::size_t kMaxHeaderBytes = 4096;       // ffmpeg's headers are about 100 bytes
 constexpr std::size_t kMaxFrameParamBytes = 1024;   // "FRAME" parameters up to '\n'
-constexpr std::size_t kSkipChunkBytes = 64 * 1024;  // chroma is discarded through a buffer this big
+constexpr std::size_t kSkipChunkBytes = 64 * 1024;  // alpha is discarded through a buffer this big
 
 }  // namespace
 
@@ -119,8 +119,14 @@ bool Y4mReader::read_luma(SourceImage& out, std::size_t& done) {
     return true;
 }
 
-bool Y4mReader::skip_chroma(std::size_t& done) {
-    for (std::size_t left = header_.chroma_bytes(); left > 0;) {
+bool Y4mReader::read_chroma(SourceImage& out, std::size_t& done) {
+    out.chroma_width = header_.chroma_width();
+    out.chroma_height = header_.chroma_height();
+    const std::size_t plane = static_cast<std::size_t>(out.chroma_width) * static_cast<std::size_t>(out.chroma_height);
+    out.u.resize(plane);  // no allocation once out has held a frame of this size
+    out.v.resize(plane);
+    if (plane > 0 && !(read_exact(out.u.data(), plane, done) && read_exact(out.v.data(), plane, done))) return false;
+    for (std::size_t left = header_.chroma_bytes() - 2 * plane; left > 0;) {  // alpha
         const std::size_t chunk = std::min(left, scratch_.size());
         if (!read_exact(scratch_.data(), chunk, done)) return false;
         left -= chunk;
@@ -133,7 +139,7 @@ Y4mReader::Status Y4mReader::next(SourceImage& out) {
     const Status marker = read_frame_marker();
     if (marker != Status::Frame) return marker;
     std::size_t done = 0;
-    if (!read_luma(out, done) || !skip_chroma(done)) return Status::Error;
+    if (!read_luma(out, done) || !read_chroma(out, done)) return Status::Error;
     ++frames_read_;
     return Status::Frame;
 }

@@ -1,5 +1,5 @@
-// Reads a YUV4MPEG2 stream frame by frame as data arrives (file, FIFO or stdin; never seeks),
-// keeping only the luma plane.
+// Reads a YUV4MPEG2 stream frame by frame as data arrives (file, FIFO or stdin; never seeks): the luma
+// plane and, for 8-bit colour streams, the Cb and Cr planes (an alpha plane is skipped).
 #pragma once
 #include <cstdint>
 #include <cstdio>
@@ -25,6 +25,8 @@ public:
     int width() const override { return header_.width; }
     int height() const override { return header_.height; }
     double fps() const override { return header_.fps(); }
+    int chroma_width() const override { return header_.chroma_width(); }
+    int chroma_height() const override { return header_.chroma_height(); }
 
     const Y4mHeader& header() const { return header_; }
     int frames_read() const { return frames_read_; }
@@ -38,7 +40,7 @@ private:
     // Reads n bytes into dst; on a short read reports the truncation with `done` bytes already read.
     bool read_exact(std::uint8_t* dst, std::size_t n, std::size_t& done);
     bool read_luma(SourceImage& out, std::size_t& done);
-    bool skip_chroma(std::size_t& done);
+    bool read_chroma(SourceImage& out, std::size_t& done);
     std::string frame_label() const;
     Status fail(std::string message);
 
@@ -46,7 +48,7 @@ private:
     std::FILE* file_;     // the stream read from (owned_ or stdin)
     std::string name_;    // for messages
     Y4mHeader header_;
-    std::vector<std::uint8_t> scratch_;  // chroma being skipped, or 16-bit luma rows
+    std::vector<std::uint8_t> scratch_;  // alpha being skipped, or 16-bit luma rows
     int frames_read_ = 0;
     Status sticky_ = Status::Frame;      // End or Error once reached
     std::string error_;

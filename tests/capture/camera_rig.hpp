@@ -41,13 +41,14 @@ struct CameraRig {
     FakeVideoDevice device;
     capture::V4l2Camera camera;
     GreyImage frame;
+    Chroma chroma;
     capture::FrameInfo info;
 
     explicit CameraRig(FakeDriverConfig config = {}, capture::V4l2Options options = options_for())
         : device(clock, std::move(config)), camera(std::move(options), device, clock) {}
 
     capture::CaptureResult next(std::chrono::milliseconds timeout = std::chrono::milliseconds{100}) {
-        return camera.next(frame, info, timeout);
+        return camera.next(frame, chroma, info, timeout);
     }
     void open_streaming() {
         const capture::OpenResult opened = camera.open();

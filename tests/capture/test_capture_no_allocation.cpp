@@ -1,4 +1,5 @@
-// The frame path allocates nothing once streaming: no operator new per frame in GREY, YUYV or MJPEG
+// The frame path allocates nothing once streaming: no operator new per frame in GREY, YUYV or MJPEG,
+// chroma included
 // (libjpeg-turbo's own mallocs inside each decode are not operator new and are not counted here).
 #include <catch2/catch.hpp>
 
@@ -39,5 +40,6 @@ TEST_CASE("steady-state frames allocate nothing in the camera") {
         INFO(c.format);
         CHECK(frames == kFrames - 1);
         CHECK(allocated == 0);
+        CHECK(rig.chroma.present == (c.fourcc != V4L2_PIX_FMT_GREY));  // YUYV and the (YCbCr) JPEG have colour
     }
 }

@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <array>
+
 #include <cmath>
 #include <limits>
 
@@ -121,3 +123,26 @@ TEST_CASE("set_image repaints the frame and removes the drawing") {
     CHECK(red_count(canvas) == 0);
     CHECK(canvas.rgb()[(static_cast<std::size_t>(9) * 256 + 7) * 3] == img.at(3, 4));
 }
+
+TEST_CASE("with chroma the canvas is in colour: full-range BT.601, each chroma pixel over its 2x2 block") {
+    rays::GreyImage grey;
+    grey.px.fill(76);  // red's luma
+    rays::Chroma chroma;
+    chroma.u.fill(85);
+    chroma.v.fill(255);
+    chroma.u[0] = chroma.v[0] = 128;  // processing pixels (0..1, 0..1): grey
+    chroma.present = true;
+    const rays::io::RgbCanvas canvas(grey, chroma, 1);
+    const auto px = [&](int x, int y) {
+        const std::size_t i = (static_cast<std::size_t>(y) * 128 + static_cast<std::size_t>(x)) * 3;
+        return std::array<int, 3>{canvas.rgb()[i], canvas.rgb()[i + 1], canvas.rgb()[i + 2]};
+    };
+    CHECK(px(1, 1) == std::array<int, 3>{76, 76, 76});
+    const auto red = px(2, 0);
+    CHECK(red[0] >= 250);
+    CHECK(red[1] <= 5);
+    CHECK(red[2] <= 5);
+    chroma.present = false;  // a mono source: grey
+    CHECK(rays::io::RgbCanvas(grey, chroma, 1).rgb()[6] == 76);
+}
+

@@ -76,7 +76,7 @@ TEST_CASE("Y4mWriter refuses bad parameters and closed streams") {
     CHECK_THAT(writer.error(), Catch::Contains("closed"));
 }
 
-TEST_CASE("odd-sized 4:2:0 written by hand: luma exact, chroma skipped, FRAME parameters ignored") {
+TEST_CASE("odd-sized 4:2:0 written by hand: luma and chroma exact, FRAME parameters ignored") {
     rays::test::TempDir dir;
     // 5x3 luma; chroma planes are ceil(5/2) x ceil(3/2) = 3x2 each, filled with values luma never has.
     const std::string chroma(12, static_cast<char>(0xAB));
@@ -91,18 +91,23 @@ TEST_CASE("odd-sized 4:2:0 written by hand: luma exact, chroma skipped, FRAME pa
     SourceImage img;
     REQUIRE(opened.reader->next(img) == Status::Frame);
     CHECK(img.grey == y0);
+    CHECK(img.chroma_width == 3);
+    CHECK(img.chroma_height == 2);
+    CHECK(img.u == std::vector<std::uint8_t>(6, 0xAB));
+    CHECK(img.v == std::vector<std::uint8_t>(6, 0xAB));
     REQUIRE(opened.reader->next(img) == Status::Frame);
     CHECK(img.grey == y1);
     CHECK(opened.reader->next(img) == Status::End);
 }
 
-TEST_CASE("every supported colour space skips exactly its chroma bytes") {
+TEST_CASE("every supported colour space reads exactly its chroma planes (and skips alpha)") {
     struct Case {
         const char* colour;
-        std::size_t chroma;  // for 5x3
+        std::size_t chroma;  // bytes after the luma, for 5x3
+        int chroma_w, chroma_h;
     };
-    const Case cases[] = {{"", 12},      {"C420", 12},      {"C420mpeg2", 12}, {"C411", 12},
-                          {"C422", 18},  {"C444", 30},      {"C444alpha", 45}, {"Cmono", 0}};
+    const Case cases[] = {{"", 12, 3, 2},   {"C420", 12, 3, 2}, {"C420mpeg2", 12, 3, 2}, {"C411", 12, 2, 3},
+                          {"C422", 18, 3, 3}, {"C444", 30, 5, 3}, {"C444alpha", 45, 5, 3}, {"Cmono", 0, 0, 0}};
     rays::test::TempDir dir;
     for (const Case& c : cases) {
         INFO(c.colour);
@@ -111,9 +116,13 @@ TEST_CASE("every supported colour space skips exactly its chroma bytes") {
         auto opened = open_frames(dir.write("c.y4m", stream));
         REQUIRE(opened.reader);
         SourceImage img;
+        CHECK(opened.reader->chroma_width() == c.chroma_w);
+        CHECK(opened.reader->chroma_height() == c.chroma_h);
         for (int f = 0; f < 3; ++f) {
             REQUIRE(opened.reader->next(img) == Status::Frame);
             CHECK(img.grey == pattern(5, 3, f));
+            CHECK(img.has_chroma() == (c.chroma_w > 0));
+            CHECK(img.u.size() == static_cast<std::size_t>(c.chroma_w * c.chroma_h));
         }
         CHECK(opened.reader->next(img) == Status::End);
     }

@@ -9,6 +9,7 @@
 #include "core/tracker.hpp"
 #include "frame_record.hpp"
 #include "io/frame_reader.hpp"
+#include "io/frame_scaler.hpp"
 #include "io/overlay.hpp"
 #include "io/png_writer.hpp"
 #include "replay_options.hpp"
@@ -23,10 +24,10 @@ int fail(const std::string& message) {
     return 1;
 }
 
-bool write_overlay(const std::string& dir, const rays::GreyImage& frame, const rays::Tracker& tracker,
-                   std::string& error) {
+bool write_overlay(const std::string& dir, const rays::GreyImage& frame, const rays::Chroma& chroma,
+                   const rays::Tracker& tracker, std::string& error) {
     using rays::io::Rgb;
-    rays::io::RgbCanvas canvas(frame, kOverlayZoom);
+    rays::io::RgbCanvas canvas(frame, chroma, kOverlayZoom);
     const rays::Contour& c = tracker.contour();
     if (tracker.result().has_contour) {
         for (int i = 0; i < c.size; i += kOverlayRayStride) canvas.line(c.ref, c.points[i].p, Rgb{60, 90, 200});
@@ -62,7 +63,8 @@ int main(int argc, char** argv) {
     auto opened = rays::io::open_frames(options->input);
     if (!opened.reader) return fail(opened.error);
     rays::io::FrameReader& reader = *opened.reader;
-    const auto scaler = rays::io::AreaScaler::make(reader.width(), reader.height(), options->crop, error);
+    const auto scaler = rays::io::FrameScaler::make(reader.width(), reader.height(), reader.chroma_width(),
+                                                    reader.chroma_height(), options->crop, error);
     if (!scaler) return fail(error);
     if (!options->overlay_dir.empty()) {
         std::error_code ec;
@@ -76,10 +78,11 @@ int main(int argc, char** argv) {
     rays::SteadyClock clock;
     rays::Tracker tracker(config, clock);
     if (options->init) tracker.start_at(*options->init);
-    rays::replay::write_header(out, reader.width(), reader.height(), *scaler, config, options->budget_us);
+    rays::replay::write_header(out, reader.width(), reader.height(), scaler->luma(), config, options->budget_us);
 
     rays::io::SourceImage source;
     rays::GreyImage frame;
+    rays::Chroma chroma;
     std::vector<double> times;
     long tracking = 0, losses = 0;
     for (;;) {
@@ -89,7 +92,7 @@ int main(int argc, char** argv) {
             if (out != stdout) std::fclose(out);
             return fail(reader.error());
         }
-        scaler->scale(source.grey.data(), source.width, frame);
+        scaler->scale(source, frame, chroma);
         const auto start = rays::MonoClock::now();
         const auto deadline = options->budget_us > 0 ? start + std::chrono::microseconds(options->budget_us)
                                                      : rays::TimePoint::max();
@@ -99,7 +102,7 @@ int main(int argc, char** argv) {
         tracking += r.state == rays::TrackState::Tracking;
         losses += r.state == rays::TrackState::Lost;
         rays::replay::write_frame(out, tracker, us, options->crossings);
-        if (!options->overlay_dir.empty() && !write_overlay(options->overlay_dir, frame, tracker, error)) {
+        if (!options->overlay_dir.empty() && !write_overlay(options->overlay_dir, frame, chroma, tracker, error)) {
             if (out != stdout) std::fclose(out);
             return fail(error);
         }

@@ -54,7 +54,7 @@ void FrameConverter::set_mapping(io::Crop source_crop) {
     mapping_.offset_y = source_crop.y + (mapping_.scale_y - 1.0) / 2.0;
 }
 
-int FrameConverter::chroma_width() const { return (layout_.width + 1) / 2; }
+int FrameConverter::chroma_width() const { return std::max(1, layout_.width / 2); }
 
 bool FrameConverter::convert(const std::uint8_t* data, std::size_t bytes, GreyImage& out, Chroma& chroma) {
     failure_ = "";
@@ -87,7 +87,7 @@ bool FrameConverter::convert(const std::uint8_t* data, std::size_t bytes, GreyIm
 // Y0 U Y1 V: the crop's luma (every even byte) into luma_, and the chroma pairs its rows touch into u_
 // and v_ at their place in the half-width planes.
 void FrameConverter::split_yuyv(const std::uint8_t* data) {
-    const int first_pair = crop_.x / 2, end_pair = (crop_.x + crop_.w + 1) / 2;
+    const int first_pair = crop_.x / 2, end_pair = std::min((crop_.x + crop_.w + 1) / 2, layout_.width / 2);
     const auto cw = static_cast<std::ptrdiff_t>(chroma_width());
     for (int r = 0; r < crop_.h; ++r) {
         const std::uint8_t* line = data + static_cast<std::ptrdiff_t>(crop_.y + r) * layout_.bytes_per_line;

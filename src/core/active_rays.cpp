@@ -78,10 +78,12 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
     float end = 0;
     // While tracking, the search reaches only as far beyond the expected contour as it can move;
     // where the previous contour found no edge, the contour may be anywhere along the ray (a limb
-    // coming back into view), so the whole ray is searched.
-    const float limit = use_temporal && !prior.open(ray) ? kSearchScale * prior.lambda(ray) + kSearchMarginPx
-                                                         : static_cast<float>(t_.lambda_max_px);
-    const int n = profiler_.shoot(image, foreground_, m, table_.cos_at(ray), table_.sin_at(ray), limit, hyp, end);
+    // coming back into view), so the whole ray is searched. A box start's rays search within its box.
+    const float limit = std::min(use_temporal && !prior.open(ray) ? kSearchScale * prior.lambda(ray) + kSearchMarginPx
+                                                                  : static_cast<float>(t_.lambda_max_px),
+                                 prior.search_to(ray));
+    const int n = profiler_.shoot(image, foreground_, m, table_.cos_at(ray), table_.sin_at(ray), prior.search_from(ray),
+                                  limit, hyp, end);
     hyp_count_[ray] = n;
     lambda_end_[ray] = end;
     active_[ray] = 1;

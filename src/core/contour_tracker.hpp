@@ -3,6 +3,7 @@
 // Implementations size every buffer in their constructor and never allocate, block or throw in
 // process().
 #pragma once
+#include "core/box.hpp"
 #include "core/clock.hpp"
 #include "core/contour.hpp"
 #include "core/image.hpp"
@@ -33,6 +34,9 @@ public:
     virtual bool set_tunables(const TrackerTunables& tunables) = 0;
 
     virtual void start_at(Point m) = 0;  // a start point from the user replaces detection on the next frame
+    // Like start_at, with the target's extent: a box start gives the tracker the target's extent, a
+    // point start finds it. False (nothing changed) when box_problem(box) says why it cannot.
+    virtual bool start_in(const Box& box) = 0;
     // Like start_at, for the target just lost (a predictor says where it should be now): what the
     // tracker learned of its looks is kept, so something else at that point is not taken for it.
     virtual void reacquire_at(Point m) = 0;

@@ -5,8 +5,31 @@
 #include <numbers>
 
 namespace rays {
+namespace {
+
+// A box start's rays search from kBoxNearShare of the way to the box's ellipse (an edge deep inside the
+// box, a mark on the target, is not its rim) to kBoxMarginPx or kBoxMarginShare of the box's width
+// (height), whichever is more, beyond its border (a rim on the border, or a box drawn a little tight,
+// is still seen).
+constexpr int kEllipsePoints = 64;  // vertices of a box start's ellipse
+constexpr double kBoxNearShare = 0.4;
+constexpr double kBoxMarginPx = 4.0;
+constexpr double kBoxMarginShare = 0.15;
+
+// How far the ray from m in direction (c, s) runs inside the box (0 from outside it).
+double reach_in(const Box& box, Point m, double c, double s) {
+    double reach = 1e9;
+    if (c > 1e-9) reach = std::min(reach, (box.x + box.w - m.x) / c);
+    if (c < -1e-9) reach = std::min(reach, (box.x - m.x) / c);
+    if (s > 1e-9) reach = std::min(reach, (box.y + box.h - m.y) / s);
+    if (s < -1e-9) reach = std::min(reach, (box.y - m.y) / s);
+    return std::max(reach, 0.0);
+}
+
+}  // namespace
 
 void PolarPrior::set_polygon(const Point* pts, int n, const unsigned char* open) {
+    bound_.reset();
     n_ = std::min(n, static_cast<int>(points_.size()));
     std::copy(pts, pts + n_, points_.begin());
     if (open) std::copy(open, open + n_, point_open_.begin());
@@ -14,11 +37,42 @@ void PolarPrior::set_polygon(const Point* pts, int n, const unsigned char* open)
 }
 
 void PolarPrior::set_circle(double radius_px) {
+    bound_.reset();
     n_ = 0;
     circle_ = radius_px;
 }
 
+void PolarPrior::set_box(const Box& box) {
+    const Point c = box.centre();
+    const double rx = 0.5 * box.w, ry = 0.5 * box.h;
+    n_ = std::min(kEllipsePoints, static_cast<int>(points_.size()));
+    for (int k = 0; k < n_; ++k) {  // by angle round the centre, as set_polygon wants
+        const double t = 2.0 * std::numbers::pi * k / n_;
+        points_[k] = {c.x + rx * std::cos(t), c.y + ry * std::sin(t)};
+    }
+    std::fill(point_open_.begin(), point_open_.begin() + n_, 0);
+    circle_ = std::max(std::min(rx, ry), 1.0);  // too few rays for a polygon: a circle inside the box
+    // The box's own extent is [x − ½, x + w − ½] (pixel centres at integers), grown by the margin.
+    const double mx = std::max(kBoxMarginPx, kBoxMarginShare * box.w);
+    const double my = std::max(kBoxMarginPx, kBoxMarginShare * box.h);
+    bound_ = Box{box.x - 0.5 - mx, box.y - 0.5 - my, box.w + 2.0 * mx, box.h + 2.0 * my};
+}
+
 void PolarPrior::resample(const RayTable& table, Point m, double lo, double hi) {
+    resample_lambda(table, m, lo, hi);
+    const int rays = table.count();
+    if (!bound_) {
+        std::fill(from_.begin(), from_.begin() + rays, static_cast<float>(lo));
+        std::fill(to_.begin(), to_.begin() + rays, static_cast<float>(hi));
+        return;
+    }
+    for (int i = 0; i < rays; ++i) {
+        from_[i] = static_cast<float>(std::clamp(kBoxNearShare * lambda_[i], lo, hi));
+        to_[i] = static_cast<float>(std::clamp(reach_in(*bound_, m, table.cos_at(i), table.sin_at(i)), lo, hi));
+    }
+}
+
+void PolarPrior::resample_lambda(const RayTable& table, Point m, double lo, double hi) {
     const int rays = table.count();
     double sum = 0.0;
     if (n_ < 3) {

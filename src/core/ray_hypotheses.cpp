@@ -35,7 +35,7 @@ bool RayProfiler::configure(const RaysTunables& t) {
 }
 
 int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Point m, double c, double s,
-                       float lambda_limit, Hypothesis* out, float& lambda_end) {
+                       float lambda_from, float lambda_limit, Hypothesis* out, float& lambda_end) {
     constexpr double last = kFrameSize - 1;
     // The ray ends where it leaves the image: λ ≤ the distance to the border along (c, s).
     double reach = lambda_limit;
@@ -81,7 +81,8 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Po
         };
         return at(std::max(0, j - fg_reach)) - at(std::min(n - 1, j + fg_reach));
     };
-    for (int j = 1; j < n - 1; ++j) {
+    const int first = std::max(1, static_cast<int>(std::ceil((lambda_from - lambda_min_) / step_ - 1e-6f)));
+    for (int j = first; j < n - 1; ++j) {
         const float a = std::abs(grad_[j]);
         if (a >= floor_ && a >= std::abs(grad_[j - 1]) && a > std::abs(grad_[j + 1])) {
             foreground_step_[j] = foreground != nullptr ? leaves_foreground(j) : 0.0f;

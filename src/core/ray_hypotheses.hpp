@@ -30,11 +30,11 @@ public:
     bool configure(const RaysTunables& t);
 
     // Samples the ray from m in direction (c, s) with bilinear interpolation up to λ = lambda_limit
-    // (and the image border) and writes at most K hypotheses, strongest first, into `out`.
-    // Returns how many. Also reports the last λ sampled. With a `foreground` (BackgroundModel), an
-    // edge where the ray leaves it ranks as if up to twice as strong.
+    // (and the image border) and writes at most K hypotheses at λ ≥ lambda_from, strongest first,
+    // into `out`. Returns how many. Also reports the last λ sampled. With a `foreground`
+    // (BackgroundModel), an edge where the ray leaves it ranks as if up to twice as strong.
     int shoot(const FloatImage& image, const FloatImage* foreground, Point m, double c, double s,
-              float lambda_limit, Hypothesis* out, float& lambda_end);
+              float lambda_from, float lambda_limit, Hypothesis* out, float& lambda_end);
 
 private:
     int samples_ = 0;

@@ -40,6 +40,34 @@ void TargetModel::seed(const FloatImage& image, Point m) {
     valid = true;
 }
 
+void TargetModel::seed_inside(const FloatImage& image, const Box& box) {
+    constexpr float kInner = 0.7f;  // of the semi-axes: the part of the ellipse that is surely the target
+    const Point c = box.centre();
+    const double rx = kInner * 0.5 * box.w, ry = kInner * 0.5 * box.h;
+    std::array<float, kBins> sums{}, counts{};
+    float sum = 0, sq = 0;
+    int n = 0;
+    const int x0 = std::max(0, static_cast<int>(std::ceil(c.x - rx))), x1 = std::min(kFrameSize - 1, static_cast<int>(c.x + rx));
+    const int y0 = std::max(0, static_cast<int>(std::ceil(c.y - ry))), y1 = std::min(kFrameSize - 1, static_cast<int>(c.y + ry));
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const double u = (x - c.x) / rx, v = (y - c.y) / ry;
+            if (u * u + v * v > 1.0) continue;
+            const float g = image.at(x, y);
+            const int b = bin(static_cast<float>(std::atan2(y - c.y, x - c.x)));
+            sums[b] += g;
+            counts[b] += 1.0f;
+            sum += g;
+            sq += g * g;
+            ++n;
+        }
+    seed(image, c);  // polarity, outside and contrast as any start's; the patch at the centre if the box is tiny
+    if (n < 9) return;
+    const float mean = sum / static_cast<float>(n);
+    for (int b = 0; b < kBins; ++b) inside_mean[b] = counts[b] > 0 ? sums[b] / counts[b] : mean;
+    inside_spread = std::sqrt(std::max(0.0f, sq / static_cast<float>(n) - mean * mean));
+}
+
 void TargetModel::follow_exposure(float mean) {
     constexpr float kDarkest = 1.0f;  // grey: below this the frame says nothing about exposure
     constexpr float kStep = 0.05f;    // a change of the frame's mean by more than this in one frame is an

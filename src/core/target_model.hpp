@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "core/box.hpp"
 #include "core/contour.hpp"
 
 namespace rays {
@@ -24,6 +25,9 @@ struct TargetModel {
     // A first guess before any contour: the target looks like the image round its start point
     // (mean grey of a 5×5 patch at m); no polarity yet.
     void seed(const FloatImage& image, Point m);
+    // A box start's first guess (core/box.hpp): the target looks like the image inside the box's
+    // inscribed ellipse, clear of its rim — grey per direction round the centre, and its spread.
+    void seed_inside(const FloatImage& image, const Box& box);
     // Learns from a contour; `scratch` holds max_rays floats (no allocation).
     void learn(const Contour& contour, std::vector<float>& scratch);
     // The whole frame's mean grey is now `mean`: when it jumped from the last frame's (an exposure

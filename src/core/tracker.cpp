@@ -51,11 +51,21 @@ bool Tracker::set_tunables(const TrackerTunables& tunables) {
 
 void Tracker::start_at(Point m) {
     start_point_ = m;
+    start_box_.reset();
     reacquire_ = false;
+}
+
+bool Tracker::start_in(const Box& box) {
+    if (box_problem(box) != nullptr) return false;
+    start_point_ = box.centre();
+    start_box_ = box;
+    reacquire_ = false;
+    return true;
 }
 
 void Tracker::reacquire_at(Point m) {
     start_point_ = m;
+    start_box_.reset();
     reacquire_ = true;
 }
 
@@ -65,6 +75,7 @@ void Tracker::release() {
     result_.state = TrackState::Detecting;
     result_.has_contour = false;
     start_point_.reset();
+    start_box_.reset();
 }
 
 void Tracker::reinit() {
@@ -110,12 +121,26 @@ Point Tracker::best_start(Point centre, double radius, TimePoint deadline) {
 }
 
 bool Tracker::begin_track(Point m, double radius, bool search, bool same_target, TimePoint deadline) {
-    attention_.reset();
     if (!same_target) model_.reset();
-    velocity_ = {};
     prior_.set_circle(std::max(radius, kStartRadiusPx));
     if (search) m = best_start(m, radius, deadline);
     if (!same_target) model_.seed(smoothed_, m);
+    return first_contour(m, same_target, deadline);
+}
+
+bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
+    // The box is the target's extent: the contour is expected on its inscribed ellipse, the rays
+    // search from part of the way to it to a little beyond the box's border, and the target looks
+    // like the box's inside (PolarPrior::set_box, TargetModel::seed_inside).
+    prior_.set_box(box);
+    model_.reset();
+    model_.seed_inside(smoothed_, box);
+    return first_contour(box.centre(), false, deadline);
+}
+
+bool Tracker::first_contour(Point m, bool same_target, TimePoint deadline) {
+    attention_.reset();
+    velocity_ = {};
     rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
     if (attention_.check(contour_, contour_.centroid, tunables_.attention) != nullptr) return false;
     if (!same_target) {
@@ -284,7 +309,9 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
                 return begin_track(m, last_radius, false, true, deadline) ||
                        (untracked_frames_ <= kFreshReacquireFrames && reacquire_afresh(m, last_radius, deadline));
             };
-            found = reacquire_ ? reacquire(*start_point_) : begin_track(*start_point_, kStartRadiusPx, false, false, deadline);
+            found = reacquire_   ? reacquire(*start_point_)
+                    : start_box_ ? begin_box_track(*start_box_, deadline)
+                                 : begin_track(*start_point_, kStartRadiusPx, false, false, deadline);
             // Something thin in front of the target's middle (a pole) hides the point itself: look
             // to either side of it, and above and below.
             for (int side = 0; !found && reacquire_ && side < 4; ++side) {
@@ -293,6 +320,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
                 found = reacquire({start_point_->x + offsets[side].x, start_point_->y + offsets[side].y});
             }
             start_point_.reset();
+            start_box_.reset();
         } else if (has_previous_ && detection_allowed_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;

@@ -27,6 +27,7 @@ public:
     const TrackerCapacity& capacity() const { return capacity_; }
 
     void start_at(Point m) override;
+    bool start_in(const Box& box) override;
     void reacquire_at(Point m) override;
     void release() override;
     void reinit() override;
@@ -45,6 +46,10 @@ private:
     Point best_start(Point centre, double radius, TimePoint deadline);
     // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks.
     bool begin_track(Point m, double radius, bool search, bool same_target, TimePoint deadline);
+    // Starts a track in a box: the box's ellipse the first contour's prior, its inside the target's looks.
+    bool begin_box_track(const Box& box, TimePoint deadline);
+    // The new track's first contour from m with the prior and looks set up: false if it is no target.
+    bool first_contour(Point m, bool same_target, TimePoint deadline);
     bool reacquire_afresh(Point m, double radius, TimePoint deadline);
     void track(TimePoint deadline);
     // A track standing still on something beside the mover: false (see .cpp).
@@ -72,6 +77,7 @@ private:
     int last_count_ = 0;
     Point velocity_;
     std::optional<Point> start_point_;
+    std::optional<Box> start_box_;  // a box start: start_point_ is its centre
     bool reacquire_ = false;  // start_point_ is a re-acquisition of the last target
     std::optional<Point> external_prediction_;  // from predict_next(), for the next frame only
     bool detection_allowed_ = true;

@@ -39,11 +39,13 @@ bool GreedySnake::configure(const SnakeTunables& tunables) {
 
 void GreedySnake::set_image(const FloatImage& smoothed) { snake::gradient_magnitude(smoothed, magnitude_); }
 
-void GreedySnake::set_circle(Point centre, double radius) {
+void GreedySnake::set_circle(Point centre, double radius) { set_ellipse(centre, radius, radius); }
+
+void GreedySnake::set_ellipse(Point centre, double rx, double ry) {
     n_ = t_.points;
     for (int i = 0; i < n_; ++i) {
         const double a = 2.0 * std::numbers::pi * i / n_;
-        points_[i] = on_grid(centre.x + radius * std::cos(a), centre.y + radius * std::sin(a));
+        points_[i] = on_grid(centre.x + rx * std::cos(a), centre.y + ry * std::sin(a));
     }
     std::fill(corner_.begin(), corner_.end(), std::uint8_t{0});
 }

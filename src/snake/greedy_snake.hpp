@@ -47,6 +47,8 @@ public:
 
     // A circle of tunables().points points round `centre` (clamped into the frame); no corners.
     void set_circle(Point centre, double radius);
+    // An ellipse of tunables().points points round `centre` with semi-axes rx, ry (clamped into the frame).
+    void set_ellipse(Point centre, double rx, double ry);
     // Moves every point by `step`, rounded to whole pixels and clamped into the frame.
     void shift(Point step);
 

@@ -31,12 +31,23 @@ bool GreedySnakeTracker::set_tunables(const TrackerTunables& tunables) {
     return true;
 }
 
-void GreedySnakeTracker::start_at(Point m) { start_point_ = m; }
+void GreedySnakeTracker::start_at(Point m) {
+    start_point_ = m;
+    start_box_.reset();
+}
+
+bool GreedySnakeTracker::start_in(const Box& box) {
+    if (box_problem(box) != nullptr) return false;
+    start_point_ = box.centre();
+    start_box_ = box;
+    return true;
+}
 
 void GreedySnakeTracker::release() {
     result_.state = TrackState::Detecting;
     result_.has_contour = false;
     start_point_.reset();
+    start_box_.reset();
 }
 
 void GreedySnakeTracker::reinit() {
@@ -77,9 +88,18 @@ bool GreedySnakeTracker::begin_track(Point m, double radius, bool search, TimePo
     // Williams & Shah have no balloon force: the start circle lies outside the target and the
     // curvature and image terms pull it in onto the edges.
     if (search) m = best_start(m, radius, deadline);
+    snake_.set_circle(m, tunables_.snake.initial_radius_factor * radius);
+    return first_contour(deadline);
+}
+
+bool GreedySnakeTracker::begin_box_track(const Box& box, TimePoint deadline) {
+    snake_.set_ellipse(box.centre(), 0.5 * box.w, 0.5 * box.h);
+    return first_contour(deadline);
+}
+
+bool GreedySnakeTracker::first_contour(TimePoint deadline) {
     attention_.reset();
     velocity_ = {};
-    snake_.set_circle(m, tunables_.snake.initial_radius_factor * radius);
     extract(deadline);
     return attention_.check(contour_, contour_.centroid, tunables_.attention) == nullptr;
 }
@@ -120,8 +140,10 @@ const FrameResult& GreedySnakeTracker::process(const GreyImage& frame, TimePoint
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
         if (start_point_) {
-            found = begin_track(*start_point_, kStartRadiusPx, false, deadline);
+            found = start_box_ ? begin_box_track(*start_box_, deadline)
+                               : begin_track(*start_point_, kStartRadiusPx, false, deadline);
             start_point_.reset();
+            start_box_.reset();
         } else if (has_previous_ && detection_allowed_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;

@@ -4,8 +4,8 @@
 // greedy snake of Williams & Shah (snake/greedy_snake.hpp) instead of active rays. A new snake is
 // a circle of initial_radius_factor × the detected radius, which shrinks onto the target's edges,
 // round the detected centre or round a point one radius from it (the detector often finds only
-// one crescent of a slow target; see best_start). Each frame starts from the previous snake moved
-// by the prediction.
+// one crescent of a slow target; see best_start). A box start's snake is the box's inscribed
+// ellipse. Each frame starts from the previous snake moved by the prediction.
 #pragma once
 #include <optional>
 
@@ -31,6 +31,8 @@ public:
 
     // The next frame starts a snake round m (a circle of initial_radius_factor × 10 px).
     void start_at(Point m) override;
+    // The next frame starts a snake on the box's inscribed ellipse.
+    bool start_in(const Box& box) override;
     // The snake keeps no model of the target's looks: a re-acquisition is a fresh start.
     void reacquire_at(Point m) override { start_at(m); }
     void release() override;
@@ -49,6 +51,8 @@ public:
 private:
     Point best_start(Point centre, double radius, TimePoint deadline);
     bool begin_track(Point m, double radius, bool search, TimePoint deadline);
+    bool begin_box_track(const Box& box, TimePoint deadline);
+    bool first_contour(TimePoint deadline);  // from the snake as set up: false if it is no target
     void track(TimePoint deadline);
     void extract(TimePoint deadline);  // greedy passes on the current frame, into contour_
 
@@ -65,6 +69,7 @@ private:
     Contour contour_;
     Point velocity_;
     std::optional<Point> start_point_;
+    std::optional<Box> start_box_;  // a box start: start_point_ is its centre
     std::optional<Point> external_prediction_;  // from predict_next(), for the next frame only
     bool detection_allowed_ = true;
     int lost_frames_ = 0;

@@ -62,7 +62,7 @@ TEST_CASE("the allocation counter counts operator new and malloc on the counting
 #endif
 }
 
-TEST_CASE("Tracker::process and set_tunables allocate nothing while tracking a scene", "[no_allocation]") {
+TEST_CASE("Tracker::process, set_tunables and a box start allocate nothing while tracking a scene", "[no_allocation]") {
 #ifdef RAYS_SANITIZED
     skip_under_asan();
 #else
@@ -75,6 +75,7 @@ TEST_CASE("Tracker::process and set_tunables allocate nothing while tracking a s
 
     const rays::test::TrackerAllocationRun run = rays::test::count_tracker_allocations(tracker, "clutter", kFrames, changed);
     CHECK(run.tunables_applied);
+    CHECK(run.box_tracked);
     CHECK(tracker.tunables().rays.count == changed.rays.count);
     CHECK(run.allocations == 0);
     CHECK(run.tracking >= 100);

@@ -6,7 +6,7 @@
 #include "support/skip.hpp"
 #include "support/tracker_allocation_run.hpp"
 
-TEST_CASE("GreedySnakeTracker::process and set_tunables allocate nothing while tracking a scene", "[snake][no_allocation]") {
+TEST_CASE("GreedySnakeTracker::process, set_tunables and a box start allocate nothing while tracking a scene", "[snake][no_allocation]") {
 #ifdef RAYS_SANITIZED
     rays::test::skip(
         "allocation counting replaces malloc, which AddressSanitizer owns; runs in the Release configuration");
@@ -23,6 +23,7 @@ TEST_CASE("GreedySnakeTracker::process and set_tunables allocate nothing while t
 
     const rays::test::TrackerAllocationRun run = rays::test::count_tracker_allocations(tracker, "disc", kFrames, changed);
     CHECK(run.tunables_applied);
+    CHECK(run.box_tracked);
     CHECK(tracker.contour().size == changed.snake.points);
     CHECK(run.allocations == 0);
     CHECK(run.tracking >= 100);

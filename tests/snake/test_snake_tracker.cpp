@@ -1,5 +1,5 @@
 // GreedySnakeTracker in the loop: detection, tracking a slow disc, losing a target that jumps
-// beyond its window, keeping a fast one with predict_next, and the per-frame deadline.
+// beyond its window, keeping a fast one with predict_next, the per-frame deadline, and box starts.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -177,4 +177,18 @@ TEST_CASE("GreedySnakeTracker tunables change only within the capacities", "[sna
     run.tracker->release();
     CHECK(run.tracker->state() == TrackState::Detecting);
     CHECK_FALSE(run.tracker->result().has_contour);
+}
+
+TEST_CASE("GreedySnakeTracker started in a box follows the target from the box's ellipse", "[snake][tracker][box]") {
+    using rays::scenes::Ellipse;
+    const auto target = [](int t) { return Ellipse{40.0 + 0.5 * t, 64.0, 24.0, 10.0}; };
+    Run run;
+    CHECK_FALSE(run.tracker->start_in({0, 0, 10, 0}));
+    REQUIRE(run.tracker->start_in({16, 54, 49, 21}));  // the ellipse's extent in frame 0, as cv::Rect
+    for (int t = 0; t < 20; ++t) {
+        INFO("frame " << t);
+        rays::snake_test::draw(target(t), *run.frame, static_cast<std::uint64_t>(t) + 1);
+        REQUIRE(run.tracker->process(run.frame->image, rays::TimePoint::max()).state == TrackState::Tracking);
+        CHECK(run.iou() >= 0.85);
+    }
 }

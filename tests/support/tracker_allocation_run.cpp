@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <vector>
@@ -12,6 +13,23 @@
 // Like the counter itself, only where the allocator can be replaced (not under AddressSanitizer).
 #ifndef RAYS_SANITIZED
 namespace rays::test {
+namespace {
+
+Box mask_box(const GreyImage& mask) {
+    int x0 = kFrameSize, y0 = kFrameSize, x1 = -1, y1 = -1;
+    for (int y = 0; y < kFrameSize; ++y)
+        for (int x = 0; x < kFrameSize; ++x)
+            if (mask.at(x, y) > 127) {
+                x0 = std::min(x0, x);
+                y0 = std::min(y0, y);
+                x1 = std::max(x1, x);
+                y1 = std::max(y1, y);
+            }
+    REQUIRE(x1 >= x0);
+    return {static_cast<double>(x0), static_cast<double>(y0), static_cast<double>(x1 - x0 + 1), static_cast<double>(y1 - y0 + 1)};
+}
+
+}  // namespace
 
 TrackerAllocationRun count_tracker_allocations(ContourTracker& tracker, std::string_view scene_name, int frames,
                                                const TrackerTunables& changed) {
@@ -19,11 +37,14 @@ TrackerAllocationRun count_tracker_allocations(ContourTracker& tracker, std::str
     REQUIRE(scene != nullptr);
     REQUIRE(scene->frame_count() >= frames);
     std::vector<GreyImage> images(static_cast<std::size_t>(frames));
+    const int box_frame = frames * 3 / 4;
+    Box box;  // the target's extent in box_frame: its mask's bounding box
     {
         const auto rendered = std::make_unique<scenes::SceneFrame>();
         for (int i = 0; i < frames; ++i) {
             scene->render(i, *rendered);
             images[static_cast<std::size_t>(i)] = rendered->image;
+            if (i == box_frame) box = mask_box(rendered->mask);
         }
     }
 
@@ -33,8 +54,13 @@ TrackerAllocationRun count_tracker_allocations(ContourTracker& tracker, std::str
         CountingScope counting;
         for (int i = 0; i < frames; ++i) {
             if (i == frames / 2) run.tunables_applied = tracker.set_tunables(changed);
-            if (tracker.process(images[static_cast<std::size_t>(i)], deadline).state == TrackState::Tracking)
-                ++run.tracking;
+            if (i == box_frame) {
+                tracker.release();
+                run.box_tracked = tracker.start_in(box);
+            }
+            const TrackState state = tracker.process(images[static_cast<std::size_t>(i)], deadline).state;
+            if (state == TrackState::Tracking) ++run.tracking;
+            if (i == box_frame) run.box_tracked = run.box_tracked && state == TrackState::Tracking;
         }
         run.allocations = counted_allocations();
     }

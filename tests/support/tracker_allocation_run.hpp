@@ -1,6 +1,7 @@
 // The no-allocation run both contour trackers are held to: a generated scene's frames are rendered
-// first, then the tracker processes them with allocation counting on (thread_allocation_counter.hpp)
-// and gets `changed` tunables half-way through.
+// first, then the tracker processes them with allocation counting on (thread_allocation_counter.hpp),
+// gets `changed` tunables half-way through and, three quarters through, is released and started in
+// the box round the target.
 #pragma once
 #include <string_view>
 
@@ -11,6 +12,7 @@ namespace rays::test {
 struct TrackerAllocationRun {
     int tracking = 0;               // frames that ended in the tracking state
     bool tunables_applied = false;  // set_tunables(changed) accepted them
+    bool box_tracked = false;       // start_in(the target's box) was accepted and its frame ended tracking
     long allocations = 0;           // on this thread while processing
 };
 

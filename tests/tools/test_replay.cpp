@@ -1,5 +1,6 @@
 // rays-replay end to end: a generated sequence in, JSON Lines and overlays out, errors as one line.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -93,6 +94,54 @@ TEST_CASE("rays-replay maps a cropped, non-square source as documented", "[tools
     CHECK(header["offset"][0] == Approx(20 + 0.5));
     CHECK(header["offset"][1] == Approx(10 + 0.125));
     fs::remove_all(dir);
+}
+
+TEST_CASE("rays-replay starts in a box given as --init X,Y,W,H", "[tools]") {
+    const fs::path dir = temp_dir("box");
+    REQUIRE(run(std::string(RAYS_SCENE) + " --scene disc --frames 5 --out " + (dir / "disc.y4m").string()) == 0);
+    auto scene = rays::scenes::make_scene("disc");
+    rays::scenes::SceneFrame truth;
+    scene->render(0, truth);
+    int x0 = rays::kFrameSize, y0 = rays::kFrameSize, x1 = -1, y1 = -1;  // the mask's bounding box
+    for (int y = 0; y < rays::kFrameSize; ++y)
+        for (int x = 0; x < rays::kFrameSize; ++x)
+            if (truth.mask.at(x, y) > 127) x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+    REQUIRE(x1 > x0);
+    const std::string box = std::to_string(x0) + "," + std::to_string(y0) + "," + std::to_string(x1 - x0 + 1) + "," +
+                            std::to_string(y1 - y0 + 1);
+    REQUIRE(run(std::string(RAYS_REPLAY) + " --input " + (dir / "disc.y4m").string() + " --init " + box + " --out " +
+                (dir / "run.jsonl").string()) == 0);
+    std::ifstream in(dir / "run.jsonl");
+    std::string line;
+    REQUIRE(std::getline(in, line));  // the header
+    REQUIRE(std::getline(in, line));
+    const auto first = nlohmann::json::parse(line);
+    INFO("box " << box);
+    REQUIRE(first["state"] == "tracking");  // on the very first frame: no frame pair needed
+    std::vector<rays::Point> polygon;
+    for (const auto& p : first["contour"]) polygon.push_back({p[0], p[1]});
+    CHECK(rays::scenes::polygon_mask_iou(polygon, truth.mask) >= 0.85);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("rays-replay names what is wrong with a malformed --init", "[tools]") {
+    const std::string replay = std::string(RAYS_REPLAY) + " --input x --init ";
+    CHECK(run(replay + "1,2,3") == 2);
+    CHECK(last_error() == "rays-replay: --init wants auto, a point X,Y or a box X,Y,W,H in processing pixels, not '1,2,3'");
+    CHECK(run(replay + "1,2,3,4,5") == 2);
+    CHECK(last_error().find("X,Y,W,H") != std::string::npos);
+    CHECK(run(replay + "10,10,-5,8") == 2);
+    CHECK(last_error() == "rays-replay: --init X,Y,W,H: the box's width and height must be above 0, not '10,10,-5,8'");
+    CHECK(run(replay + "10,10,5,0") == 2);
+    CHECK(last_error().find("above 0") != std::string::npos);
+    CHECK(run(replay + "100,10,40,8") == 2);
+    CHECK(last_error().find("the box must lie inside the 128x128 processing frame") != std::string::npos);
+    CHECK(run(replay + "-1,10,4,8") == 2);
+    CHECK(last_error().find("inside") != std::string::npos);
+    CHECK(run(replay + "500,3") == 2);
+    CHECK(last_error().find("the point must lie in the processing frame") != std::string::npos);
+    CHECK(run(replay + "1,2,a,4") == 2);
+    CHECK(last_error().find("X,Y,W,H") != std::string::npos);
 }
 
 TEST_CASE("rays-replay refuses bad input with one line and a non-zero exit", "[tools]") {

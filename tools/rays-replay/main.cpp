@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
 
     rays::SteadyClock clock;
     rays::Tracker tracker(config, clock);
-    if (options->init) tracker.start_at(*options->init);
+    if (options->box) tracker.start_in(*options->box);  // parse_options checked it with box_problem()
+    else if (options->init) tracker.start_at(*options->init);
     rays::replay::write_header(out, reader.width(), reader.height(), scaler->luma(), config, options->budget_us);
 
     rays::io::SourceImage source;

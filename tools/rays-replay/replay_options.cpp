@@ -28,9 +28,11 @@ bool parse_list(const std::string& text, int count, std::vector<T>& out) {
 }  // namespace
 
 const char* usage() {
-    return "usage: rays-replay --input PATH [--out FILE] [--config FILE.ini] [--init auto|X,Y]\n"
+    return "usage: rays-replay --input PATH [--out FILE] [--config FILE.ini] [--init auto|X,Y|X,Y,W,H]\n"
            "                   [--crop X,Y,W,H] [--budget-us N] [--overlay DIR] [--crossings]\n"
            "  PATH: a YUV4MPEG2 file (or - for standard input) or a folder of PGM/PNG frames.\n"
+           "  --init: where the target is in the first frame, in processing pixels: a point X,Y, or a\n"
+           "  box X,Y,W,H (left, top, width, height, as cv::Rect); auto (the default) detects it.\n"
            "  Writes JSON Lines: a header, then one object per frame (stdout without --out).\n";
 }
 
@@ -74,13 +76,25 @@ std::optional<Options> parse_options(int argc, char** argv, std::string& error) 
             }
             o.crop = {v[0], v[1], v[2], v[3]};
         } else if (arg == "--init") {
-            if (value == "auto") {
-                o.init.reset();
+            o.init.reset();
+            o.box.reset();
+            if (value == "auto") continue;
+            std::vector<double> v;
+            if (parse_list(value, 4, v)) {
+                const Box box{v[0], v[1], v[2], v[3]};
+                if (const char* problem = box_problem(box)) {
+                    error = std::string("--init X,Y,W,H: ") + problem + ", not '" + value + "'";
+                    return std::nullopt;
+                }
+                o.box = box;
                 continue;
             }
-            std::vector<double> v;
-            if (!parse_list(value, 2, v) || v[0] < 0 || v[1] < 0 || v[0] > kFrameSize - 1 || v[1] > kFrameSize - 1) {
-                error = "--init wants auto or X,Y in processing pixels (0 to 127), not '" + value + "'";
+            if (!parse_list(value, 2, v)) {
+                error = "--init wants auto, a point X,Y or a box X,Y,W,H in processing pixels, not '" + value + "'";
+                return std::nullopt;
+            }
+            if (!(v[0] >= 0 && v[1] >= 0 && v[0] <= kFrameSize - 1 && v[1] <= kFrameSize - 1)) {
+                error = "--init X,Y: the point must lie in the processing frame (0 to 127), not '" + value + "'";
                 return std::nullopt;
             }
             o.init = Point{v[0], v[1]};

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "core/box.hpp"
 #include "core/image.hpp"
 #include "io/area_scaler.hpp"
 
@@ -14,7 +15,8 @@ struct Options {
     std::string config;       // INI file with [rays], [detect], [attention], [track]
     std::string overlay_dir;  // empty: no overlays
     io::Crop crop;
-    std::optional<Point> init;  // processing pixels; empty: detect automatically
+    std::optional<Point> init;  // a point start, processing pixels; with neither, detect automatically
+    std::optional<Box> box;     // a box start (core/box.hpp), processing pixels
     long budget_us = 0;         // 0: no deadline
     bool crossings = false;
 };

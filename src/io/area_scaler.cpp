@@ -15,7 +15,7 @@ AreaScaler::Axis AreaScaler::make_axis(int crop_len) {
         const long long end = (i + 1) * len;
         const int first = static_cast<int>(begin / kFrameSize);
         const int stop = static_cast<int>((end + kFrameSize - 1) / kFrameSize);
-        Span& span = axis.spans[static_cast<std::size_t>(i)];
+        Axis::Span& span = axis.spans[static_cast<std::size_t>(i)];
         span.first = first;
         span.count = stop - first;
         span.weights = axis.weights.size();
@@ -52,31 +52,9 @@ std::optional<AreaScaler> AreaScaler::make(int src_w, int src_h, Crop crop, std:
     return scaler;
 }
 
-// Separable box filter: each source row in an output row's span is reduced to 128 column averages,
-// which accumulate with the row's weight.
 void AreaScaler::scale(const std::uint8_t* src, int src_stride, GreyImage& out) const {
     const std::uint8_t* crop_origin = src + static_cast<std::ptrdiff_t>(crop_.y) * src_stride + crop_.x;
-    for (int r = 0; r < kFrameSize; ++r) {
-        std::array<float, kFrameSize> acc{};
-        const Span& row_span = rows_.spans[static_cast<std::size_t>(r)];
-        for (int t = 0; t < row_span.count; ++t) {
-            const std::uint8_t* line = crop_origin + static_cast<std::ptrdiff_t>(row_span.first + t) * src_stride;
-            const float wy = rows_.weights[row_span.weights + static_cast<std::size_t>(t)];
-            for (int i = 0; i < kFrameSize; ++i) {
-                const Span& col_span = cols_.spans[static_cast<std::size_t>(i)];
-                const float* wx = &cols_.weights[col_span.weights];
-                const std::uint8_t* px = line + col_span.first;
-                float sum = 0.0f;
-                for (int u = 0; u < col_span.count; ++u) sum += wx[u] * px[u];
-                acc[static_cast<std::size_t>(i)] += wy * sum;
-            }
-        }
-        std::uint8_t* dst = out.row(r);
-        for (int i = 0; i < kFrameSize; ++i) {
-            const float rounded = acc[static_cast<std::size_t>(i)] + 0.5f;  // acc >= 0: truncation rounds
-            dst[i] = static_cast<std::uint8_t>(std::min(255, static_cast<int>(rounded)));
-        }
-    }
+    area_filter(rows_, cols_, crop_origin, src_stride, out.px.data());
 }
 
 }  // namespace rays::io

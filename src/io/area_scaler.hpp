@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "io/area_filter.hpp"
 
 namespace rays::io {
 
@@ -36,16 +37,8 @@ public:
     const Crop& crop() const { return crop_; }
 
 private:
-    // The source pixels (relative to the crop) one processing pixel covers in one axis, with their weights.
-    struct Span {
-        int first = 0;
-        int count = 0;
-        std::size_t weights = 0;  // index of the first weight in the axis' weight list
-    };
-    struct Axis {
-        std::array<Span, kFrameSize> spans;
-        std::vector<float> weights;
-    };
+    // The source pixels (relative to the crop) each processing pixel covers in one axis, with their weights.
+    using Axis = AreaAxis<kFrameSize>;
     static Axis make_axis(int crop_len);
 
     Crop crop_;

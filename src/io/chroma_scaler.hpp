@@ -3,13 +3,12 @@
 // so 4:2:0 and 4:2:2 crops may start or end inside a chroma pixel), by area averaging with fractional
 // edges. Each chroma output pixel covers the source area of its 2×2 processing pixels.
 #pragma once
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "core/image.hpp"
+#include "io/area_filter.hpp"
 #include "io/area_scaler.hpp"
 
 namespace rays::io {
@@ -26,19 +25,10 @@ public:
     void scale(const std::uint8_t* u, const std::uint8_t* v, int stride, Chroma& out) const;
 
 private:
-    struct Span {
-        int first = 0;
-        int count = 0;
-        std::size_t weights = 0;
-    };
-    struct Axis {
-        std::array<Span, kChromaSize> spans;
-        std::vector<float> weights;
-    };
+    using Axis = AreaAxis<kChromaSize>;
     // Output pixel i of kChromaSize covers [begin + i·len/kChromaSize, begin + (i+1)·len/kChromaSize),
     // in chroma pixel edges, clipped to the plane's `size` pixels.
     static Axis make_axis(double begin, double len, int size);
-    void scale_plane(const std::uint8_t* src, int stride, std::array<std::uint8_t, kChromaPixels>& out) const;
 
     Axis cols_;
     Axis rows_;

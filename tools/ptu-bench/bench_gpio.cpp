@@ -8,6 +8,7 @@
 #include "drivers/gpio/fake_pwm_channel.hpp"
 #include "drivers/gpio/gpio_stepper.hpp"
 #include "drivers/gpio/pwm_servo.hpp"
+#include "fake_stepper.hpp"
 #include "latency_bench.hpp"
 
 namespace rays::bench {
@@ -23,12 +24,7 @@ ptu::PtuCommand both(ptu::CommandMode mode, double value) {
 double micros(TimePoint from, TimePoint to) { return std::chrono::duration<double, std::micro>(to - from).count(); }
 
 std::vector<double> run_stepper(int commands, std::string& error) {
-    gpio::GpioSettings settings;
-    settings.chip = "fake";
-    settings.pan_step_line = 0;
-    settings.pan_dir_line = 1;
-    settings.tilt_step_line = 2;
-    settings.tilt_dir_line = 3;
+    gpio::GpioSettings settings = fake_stepper_settings();
     settings.max_accel_deg_s2 = 100000.0;  // stops within a few steps between commands
     SteadyClock clock;
     gpio::FakeGpioLines lines;

@@ -9,6 +9,7 @@
 
 #include "drivers/gpio/fake_gpio_lines.hpp"
 #include "drivers/gpio/gpio_stepper.hpp"
+#include "fake_stepper.hpp"
 #include "latency_bench.hpp"
 
 namespace rays::bench {
@@ -29,12 +30,7 @@ double sustained_rate(const std::vector<gpio::Edge>& edges) {
 }
 
 std::vector<double> run_step_rate(int commands, std::string& error) {
-    gpio::GpioSettings settings;
-    settings.chip = "fake";
-    settings.pan_step_line = 0;
-    settings.pan_dir_line = 1;
-    settings.tilt_step_line = 2;
-    settings.tilt_dir_line = 3;
+    gpio::GpioSettings settings = fake_stepper_settings();
     const double steps_per_deg = settings.pan_steps_per_rev * settings.pan_microsteps * settings.pan_gear_ratio / 360.0;
     settings.max_velocity_deg_s = gpio::kMaxStepRateHz / steps_per_deg;
     settings.max_accel_deg_s2 = 20000.0;  // top speed within about 0.03 s

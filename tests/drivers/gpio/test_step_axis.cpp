@@ -66,13 +66,18 @@ Run simulate(StepAxis& axis, const AxisGoal& goal, TimePoint& t, double seconds,
     return run;
 }
 
+// An axis of `accel` steps/s² and `max_speed` steps/s under a `max_rate` step rate, 5 µs DIR setup.
+StepAxis axis_of(double accel, double max_speed, double max_rate) {
+    AxisKinematics k;
+    k.accel = accel;
+    k.max_speed = max_speed;
+    return StepAxis(k, max_rate, 5e-6);
+}
+
 }  // namespace
 
 TEST_CASE("StepAxis: a position move is a trapezoid that lands exactly", "[gpio][step_axis]") {
-    AxisKinematics k;
-    k.accel = 10000.0;
-    k.max_speed = 2000.0;
-    StepAxis axis(k, 5000.0, 5e-6);
+    StepAxis axis = axis_of(10000.0, 2000.0, 5000.0);
     TimePoint t{};
     const Run run = simulate(axis, AxisGoal{AxisGoal::Kind::Position, 0.0, 1234, 2000.0}, t, 3.0);
     CHECK(axis.position() == 1234);
@@ -87,10 +92,7 @@ TEST_CASE("StepAxis: a position move is a trapezoid that lands exactly", "[gpio]
 }
 
 TEST_CASE("StepAxis: velocity ramps, holds and reverses through rest", "[gpio][step_axis]") {
-    AxisKinematics k;
-    k.accel = 4000.0;
-    k.max_speed = 1000.0;
-    StepAxis axis(k, 2000.0, 5e-6);
+    StepAxis axis = axis_of(4000.0, 1000.0, 2000.0);
     TimePoint t{};
     Run run = simulate(axis, AxisGoal{AxisGoal::Kind::Velocity, 5000.0, 0, 1000.0}, t, 1.0);  // capped at max_speed
     CHECK(run.max_rate <= 1000.0 * 1.0001);
@@ -105,10 +107,7 @@ TEST_CASE("StepAxis: velocity ramps, holds and reverses through rest", "[gpio][s
 }
 
 TEST_CASE("StepAxis: a late edge is not caught up: no later interval beats the rate or the ramp", "[gpio][step_axis]") {
-    AxisKinematics k;
-    k.accel = 32000.0;
-    k.max_speed = 8000.0;
-    StepAxis axis(k, 10000.0, 5e-6);
+    StepAxis axis = axis_of(32000.0, 8000.0, 10000.0);
     TimePoint t{};
     // The pulse thread's lateness: jitter of 0–63 µs (under kJitter) on every edge, 300 µs every 397th,
     // 3 ms every 1009th.
@@ -134,7 +133,7 @@ TEST_CASE("StepAxis: a late edge is not caught up: no later interval beats the r
     CHECK(move.max_rate <= 8000.0 * 1.0001);
     CHECK(move.max_rise <= kRampRise * 32000.0 * 1.001);
     // On time, the same run ramps at the full acceleration: lateness is what slowed the ramp above.
-    StepAxis punctual(k, 10000.0, 5e-6);
+    StepAxis punctual = axis_of(32000.0, 8000.0, 10000.0);
     TimePoint u{};
     const Run on_time = simulate(punctual, AxisGoal{AxisGoal::Kind::Velocity, 20000.0, 0, 8000.0}, u, 1.0);
     CHECK(on_time.max_rise >= 0.99 * kRampRise * 32000.0);  // the bound is reached, at the start

@@ -26,12 +26,9 @@ double micros(TimePoint from, TimePoint to) { return std::chrono::duration<doubl
 std::vector<double> run_stepper(int commands, std::string& error) {
     gpio::GpioSettings settings = fake_stepper_settings();
     settings.max_accel_deg_s2 = 100000.0;  // stops within a few steps between commands
-    SteadyClock clock;
-    gpio::FakeGpioLines lines;
-    auto driver = gpio::make_gpio_stepper_driver(settings, clock, lines, error);
-    if (!driver) return {};
-    if (ptu::DriverStatus s = driver->configure(); !s.ok) return error = s.what(), std::vector<double>{};
-    if (ptu::DriverStatus s = driver->activate(); !s.ok) return error = s.what(), std::vector<double>{};
+    const auto rig = FakeStepper::start(settings, error);
+    if (!rig) return {};
+    auto& [clock, lines, driver] = *rig;
     std::vector<double> latencies;
     for (int i = 0; i < commands; ++i) {
         const std::size_t before = lines.edge_count();

@@ -35,12 +35,9 @@ std::vector<double> run_step_rate(int commands, std::string& error) {
     settings.max_velocity_deg_s = gpio::kMaxStepRateHz / steps_per_deg;
     settings.max_accel_deg_s2 = 20000.0;  // top speed within about 0.03 s
     settings.pulse_width_us = 2.0;
-    SteadyClock clock;
-    gpio::FakeGpioLines lines;
-    auto driver = gpio::make_gpio_stepper_driver(settings, clock, lines, error);
-    if (!driver) return {};
-    if (ptu::DriverStatus s = driver->configure(); !s.ok) return error = s.what(), std::vector<double>{};
-    if (ptu::DriverStatus s = driver->activate(); !s.ok) return error = s.what(), std::vector<double>{};
+    const auto rig = FakeStepper::start(settings, error);
+    if (!rig) return {};
+    auto& [clock, lines, driver] = *rig;
     ptu::PtuCommand command;
     command.axes[0] = command.axes[1] = {ptu::CommandMode::Velocity, 100.0};  // rad/s: held at the top speed
     for (int i = 0; i < commands; ++i) {

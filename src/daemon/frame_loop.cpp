@@ -118,6 +118,10 @@ void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
         tracker_->start_at({command.a, command.b});
         mode_ = ControlMode::Automatic;
         return;
+    case CommandKind::TrackBox:
+        tracker_->start_in(command.box);  // the request handler checked it with box_problem()
+        mode_ = ControlMode::Automatic;
+        return;
     case CommandKind::Release:
     case CommandKind::Reinit: {
         if (command.kind == CommandKind::Release) tracker_->release();

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "core/box.hpp"
 #include "core/clock.hpp"
 #include "core/image.hpp"
 #include "core/contour_tracker.hpp"
@@ -23,12 +24,14 @@ struct LoopTunables {
 };
 LoopTunables loop_tunables(const DaemonConfig& config);
 
-enum class CommandKind { Tunables, Track, Release, Reinit, Jog, Goto, Stop, Home, Park, Resume };
+// Track: a point start; TrackBox: a box start (core/box.hpp).
+enum class CommandKind { Tunables, Track, TrackBox, Release, Reinit, Jog, Goto, Stop, Home, Park, Resume };
 
 struct LoopCommand {
     CommandKind kind = CommandKind::Stop;
     double a = 0.0;  // Track: x px; Jog: pan rad/s; Goto: pan rad
     double b = 0.0;  // Track: y px; Jog: tilt rad/s; Goto: tilt rad
+    Box box;         // TrackBox only, processing pixels
     LoopTunables tunables;  // Tunables only
 };
 
@@ -37,6 +40,12 @@ inline LoopCommand make_command(CommandKind kind, double a = 0.0, double b = 0.0
     command.kind = kind;
     command.a = a;
     command.b = b;
+    return command;
+}
+
+inline LoopCommand make_box_command(const Box& box) {
+    LoopCommand command = make_command(CommandKind::TrackBox);
+    command.box = box;
     return command;
 }
 

@@ -221,6 +221,17 @@ json RequestHandler::track(const json& request) {
     std::optional<double> y = number_field(request, "y");
     if (!x) return missing_number("x", "track");
     if (!y) return missing_number("y", "track");
+    const bool has_w = request.contains("w"), has_h = request.contains("h");
+    if (has_w || has_h) {  // a box: (x, y) its top-left corner
+        if (!has_w || !has_h) return error("bad_request", "track: a box needs both \"w\" and \"h\"");
+        std::optional<double> w = number_field(request, "w");
+        std::optional<double> h = number_field(request, "h");
+        if (!w) return missing_number("w", "track");
+        if (!h) return missing_number("h", "track");
+        const Box box{*x, *y, *w, *h};
+        if (const char* problem = box_problem(box)) return error("bad_request", std::string("track: ") + problem);
+        return send(make_box_command(box), "track");
+    }
     if (*x < 0 || *x > kFrameSize - 1 || *y < 0 || *y > kFrameSize - 1)
         return error("bad_request", "track: x and y are processing pixels in [0, 127]");
     return send(make_command(CommandKind::Track, *x, *y), "track");

@@ -14,7 +14,7 @@
 namespace rays::daemon {
 
 constexpr int kProtocolMajor = 1;
-constexpr int kProtocolMinor = 0;
+constexpr int kProtocolMinor = 1;  // 1: track takes a box (w, h)
 
 // Facts fixed at start that status reports.
 struct DaemonFacts {

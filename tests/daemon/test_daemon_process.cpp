@@ -231,6 +231,10 @@ TEST_CASE("every command works over the socket, and raysctl's exit codes tell th
     CHECK(out == "rays.alpha = 0.40\n");
     CHECK(raysctl(s, "track 64 60") == 0);
     CHECK(raysctl(s, "track 64") == 2);
+    CHECK(raysctl(s, "track 40 30 24 16") == 0);
+    CHECK(raysctl(s, "track 40 30 24") == 2);
+    CHECK(raysctl(s, "track 40 30 -24 16", &out) == 1);
+    CHECK(out.find("width and height must be above 0") != std::string::npos);
     CHECK(raysctl(s, "snapshot " + (s.dir / "snap.png").string()) == 0);
     CHECK(read_file(s.dir / "snap.png").substr(1, 3) == "PNG");
     CHECK(raysctl(s, "watch 3", &out) == 0);

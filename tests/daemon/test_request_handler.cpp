@@ -113,6 +113,38 @@ TEST_CASE("track, release, reinit, resume and every ptu action queue their comma
     CHECK(f.take().a == Approx(M_PI));
 }
 
+TEST_CASE("track with w and h queues a box start; a malformed box gets a JSON error saying why") {
+    Fixture f;
+    CHECK(f.ask(R"({"cmd":"track","x":40,"y":30.5,"w":24,"h":16})")["class"] == "ok");
+    LoopCommand box = f.take();
+    CHECK(box.kind == CommandKind::TrackBox);
+    CHECK(box.box.x == 40);
+    CHECK(box.box.y == 30.5);
+    CHECK(box.box.w == 24);
+    CHECK(box.box.h == 16);
+    CHECK(f.ask(R"({"cmd":"track","x":0,"y":0,"w":128,"h":128})")["class"] == "ok");  // the whole frame
+    CHECK(f.take().kind == CommandKind::TrackBox);
+
+    auto message = [&](const std::string& line) {
+        json reply = f.ask(line);
+        REQUIRE(reply["class"] == "error");
+        CHECK(reply["error"]["code"] == "bad_request");
+        return reply["error"]["message"].get<std::string>();
+    };
+    CHECK(message(R"({"cmd":"track","x":40,"y":30,"w":24})") == "track: a box needs both \"w\" and \"h\"");
+    CHECK(message(R"({"cmd":"track","x":40,"y":30,"h":16})") == "track: a box needs both \"w\" and \"h\"");
+    CHECK(message(R"({"cmd":"track","x":40,"y":30,"w":"24","h":16})") == "track needs a number \"w\"");
+    CHECK(message(R"({"cmd":"track","x":40,"y":30,"w":24,"h":null})") == "track needs a number \"h\"");
+    CHECK(message(R"({"cmd":"track","x":40,"y":30,"w":0,"h":16})") ==
+          "track: the box's width and height must be above 0");
+    CHECK(message(R"({"cmd":"track","x":40,"y":30,"w":24,"h":-16})").find("above 0") != std::string::npos);
+    CHECK(message(R"({"cmd":"track","x":120,"y":30,"w":24,"h":16})") ==
+          "track: the box must lie inside the 128x128 processing frame: x and y at least 0, x + w and y + h at most 128");
+    CHECK(message(R"({"cmd":"track","x":-2,"y":30,"w":24,"h":16})").find("inside") != std::string::npos);
+    CHECK(message(R"({"cmd":"track","y":30,"w":24,"h":16})") == "track needs a number \"x\"");
+    CHECK(f.channels.commands.empty());
+}
+
 TEST_CASE("a full command queue answers busy and loses nothing already queued") {
     Fixture f;
     int accepted = 0;

@@ -25,7 +25,8 @@ void usage(std::FILE* out) {
         "  status | stats | version\n"
         "  get [NAME]                   one parameter, or all of them\n"
         "  set NAME VALUE               change a tunable until the next reload\n"
-        "  track X Y                    start tracking at processing pixel (X, Y)\n"
+        "  track X Y [W H]              start tracking at processing pixel (X, Y), or in the box\n"
+        "                               with top-left corner (X, Y), width W and height H\n"
         "  release | reinit | resume\n"
         "  ptu jog PAN_DEG_S TILT_DEG_S | ptu goto PAN_DEG TILT_DEG | ptu stop | ptu home | ptu park\n"
         "  snapshot FILE.png            the newest frame with the contour drawn\n"
@@ -44,7 +45,7 @@ bool parse_number(const std::string& text, double& out) {
 std::optional<json> build_request(const std::vector<std::string>& args) {
     const std::string& cmd = args[0];
     std::size_t n = args.size();
-    double a = 0, b = 0;
+    double a = 0, b = 0, w = 0, h = 0;
     if ((cmd == "status" || cmd == "stats" || cmd == "version" || cmd == "release" || cmd == "reinit" ||
          cmd == "resume" || cmd == "snapshot") && n == (cmd == "snapshot" ? 2u : 1u))
         return json{{"cmd", cmd}};
@@ -52,6 +53,9 @@ std::optional<json> build_request(const std::vector<std::string>& args) {
     if (cmd == "set" && n == 3) return json{{"cmd", "set"}, {"name", args[1]}, {"value", args[2]}};
     if (cmd == "track" && n == 3 && parse_number(args[1], a) && parse_number(args[2], b))
         return json{{"cmd", "track"}, {"x", a}, {"y", b}};
+    if (cmd == "track" && n == 5 && parse_number(args[1], a) && parse_number(args[2], b) && parse_number(args[3], w) &&
+        parse_number(args[4], h))
+        return json{{"cmd", "track"}, {"x", a}, {"y", b}, {"w", w}, {"h", h}};
     if (cmd == "watch" && n <= 2) return json{{"cmd", "watch"}, {"enable", true}};
     if (cmd == "ptu" && n == 2 && (args[1] == "stop" || args[1] == "home" || args[1] == "park"))
         return json{{"cmd", "ptu"}, {"action", args[1]}};

@@ -67,7 +67,7 @@ TEST_CASE("YUYV chroma reaches the frame at 64x64 over the crop, exactly as the 
     }
 }
 
-TEST_CASE("a colour MJPEG frame reaches the frame with its chroma; GREY with none") {
+TEST_CASE("a colour MJPEG frame reaches the frame with its chroma, GREY with none") {
     {
         CameraRig rig(FakeDriverConfig{.formats = {V4L2_PIX_FMT_MJPEG}});
         rig.open_streaming();

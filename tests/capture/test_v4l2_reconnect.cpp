@@ -115,7 +115,7 @@ TEST_CASE("DQBUF or QBUF failing with ENODEV or EIO is a disconnect, and the sam
     }
 }
 
-TEST_CASE("a signal during the wait is a Timeout; poll failing otherwise is a disconnect") {
+TEST_CASE("a signal during the wait is a Timeout, poll failing otherwise is a disconnect") {
     CameraRig rig;
     rig.open_streaming();
     rig.device.fail_next_poll(EINTR);

@@ -111,7 +111,7 @@ DaemonProcess start(const Setup& s, std::map<std::string, std::string> env = {})
 
 }  // namespace
 
-TEST_CASE("config errors name file and line and exit with 78; --check-config validates") {
+TEST_CASE("config errors name file and line and exit with 78, --check-config validates") {
     Setup s = make_setup("config-errors");
     CHECK(std::system((raysd_binary().string() + " --check-config " + s.config.string() + " > /dev/null").c_str()) == 0);
     fs::path bad = s.dir / "bad.ini";
@@ -123,7 +123,7 @@ TEST_CASE("config errors name file and line and exit with 78; --check-config val
     std::ofstream(bad) << "[ptu]\ndriver = mock\n\n[camera]\nsource = webcam\n";
     DaemonProcess run({raysd_binary().string(), "--config", bad.string()}, {}, s.dir / "run.log");
     CHECK(run.wait(5s) == 78);
-    CHECK(run.log().find(":5: camera.source = webcam is not one of v4l2|replay") != std::string::npos);
+    CHECK(run.log().find(":5: camera.source = webcam is not one of sim|v4l2|replay") != std::string::npos);
     std::ofstream(bad) << "[loop]\nbudget_ms = 0\n";
     DaemonProcess range({raysd_binary().string(), "--check-config", bad.string()}, {}, s.dir / "range.log");
     CHECK(range.wait(5s) == 78);
@@ -267,7 +267,7 @@ TEST_CASE("malformed and oversized requests get errors and the connection stays 
     CHECK(daemon.wait(10s) == 0);
 }
 
-TEST_CASE("many clients are served up to the limit; a client that never reads is dropped, not waited for") {
+TEST_CASE("many clients are served up to the limit, a client that never reads is dropped, not waited for") {
     // Unpaced replay: as many frames as the loop takes, so a silent watcher's backlog grows fast.
     Setup s = make_setup("clients", "max_clients = 4\nmax_output_kib = 16\n", false);
     DaemonProcess daemon = start(s);
@@ -298,7 +298,7 @@ TEST_CASE("many clients are served up to the limit; a client that never reads is
     CHECK(daemon.wait(10s) == 0);
 }
 
-TEST_CASE("SIGHUP reloads tunables without dropping the track; a bad reload is refused and changes nothing") {
+TEST_CASE("SIGHUP reloads tunables without dropping the track, a bad reload is refused and changes nothing") {
     Setup s = make_setup("reload");
     DaemonProcess daemon = start(s);
     REQUIRE(wait_for_socket(s.socket, 10s));

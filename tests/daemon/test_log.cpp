@@ -38,7 +38,7 @@ TEST_CASE("a repeated message is written once per interval, then with the count 
     CHECK(captured.text() == "<4>camera away (0)\n<4>another message\n<4>camera away (5) (repeated 4 more times)\n");
 }
 
-TEST_CASE("the frame loop's log lines wait in a bounded queue until drained; overflow is counted") {
+TEST_CASE("the frame loop's log lines wait in a bounded queue until drained, overflow is counted") {
     CapturedLog captured;
     set_log_level(Priority::Info);
     set_log_repeat_interval(std::chrono::seconds(0));

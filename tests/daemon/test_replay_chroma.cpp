@@ -37,7 +37,7 @@ CapturedFrame replay_first(const std::filesystem::path& path) {
 
 }  // namespace
 
-TEST_CASE("a replayed 4:2:0 stream's chroma reaches the frame loop; a mono stream's is absent") {
+TEST_CASE("a replayed 4:2:0 stream's chroma reaches the frame loop, a mono stream's is absent") {
     const std::filesystem::path dir = test::fresh_dir("replay-chroma");
     {
         std::ofstream out(dir / "colour.y4m", std::ios::binary);

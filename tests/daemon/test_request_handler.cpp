@@ -113,7 +113,7 @@ TEST_CASE("track, release, reinit, resume and every ptu action queue their comma
     CHECK(f.take().a == Approx(M_PI));
 }
 
-TEST_CASE("track with w and h queues a box start; a malformed box gets a JSON error saying why") {
+TEST_CASE("track with w and h queues a box start, a malformed box gets a JSON error saying why") {
     Fixture f;
     CHECK(f.ask(R"({"cmd":"track","x":40,"y":30.5,"w":24,"h":16})")["class"] == "ok");
     LoopCommand box = f.take();
@@ -158,7 +158,7 @@ TEST_CASE("a full command queue answers busy and loses nothing already queued") 
     CHECK(taken == accepted);
 }
 
-TEST_CASE("watch switches the client's telemetry on and off; status and stats report") {
+TEST_CASE("watch switches the client's telemetry on and off, status and stats report") {
     Fixture f;
     CHECK(f.ask(R"({"cmd":"watch"})")["enable"] == true);
     CHECK(f.session.watching);

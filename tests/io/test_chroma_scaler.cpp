@@ -74,7 +74,7 @@ TEST_CASE("a 4:2:0 stream's chroma reaches the frame at 64x64 over the luma's ar
     }
 }
 
-TEST_CASE("a mono stream marks the chroma absent; scaling a colour frame allocates nothing") {
+TEST_CASE("a mono stream marks the chroma absent, scaling a colour frame allocates nothing") {
     rays::test::TempDir dir;
     const std::string mono = "YUV4MPEG2 W64 H64 F25:1 Cmono\nFRAME\n" + std::string(64 * 64, 'x');
     CHECK_FALSE(read_first(dir.write("mono.y4m", mono), {}).chroma.present);

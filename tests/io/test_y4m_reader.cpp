@@ -228,7 +228,7 @@ TEST_CASE("reading frames after the first allocates nothing") {
     CHECK(img.grey == pattern(160, 120, 4));
 }
 
-TEST_CASE("\"-\" reads YUV4MPEG2 from stdin") {
+TEST_CASE("the path - reads YUV4MPEG2 from stdin") {
     rays::test::TempDir dir;
     const auto y = pattern(4, 2, 3);
     const std::string path = dir.write("in.y4m", "YUV4MPEG2 W4 H2 F25:1 Cmono\nFRAME\n" + bytes(y));

@@ -74,7 +74,7 @@ TEST_CASE("Every named scene exists once, renders deterministically and has at l
     CHECK(make_scene("") == nullptr);
 }
 
-TEST_CASE("Each scene's truth matches its mask; targets stay in frame, visible and moving", "[scenes]") {
+TEST_CASE("Each scene's truth matches its mask, targets stay in frame, visible and moving", "[scenes]") {
     for (const auto name : scene_names()) {
         INFO(name);
         const auto scene = make_scene(name);

@@ -253,7 +253,7 @@ TEST_CASE("gpio-stepper: the factory refuses settings that cannot work", "[gpio]
     CHECK(gpio::make_gpio_stepper_driver(rig_settings(), clock, lines, error) != nullptr);
 }
 
-TEST_CASE("gpio-stepper: write before activate moves nothing; the pulse thread reports its scheduling", "[gpio]") {
+TEST_CASE("gpio-stepper: write before activate moves nothing, the pulse thread reports its scheduling", "[gpio]") {
     StepperRig rig(rig_settings(), false);
     CHECK_FALSE(rig.driver->write(command(CommandMode::Velocity, 1.0, 1.0), rig.clock.now()).ok);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));

@@ -85,7 +85,7 @@ TEST_CASE("pwm-servo: velocity integrates, stop holds the estimated position, re
     CHECK(state.axes[0].velocity_rad_s == Approx(0.0));
 }
 
-TEST_CASE("pwm-servo: stale commands hold; deactivate disables only when configured", "[pwm]") {
+TEST_CASE("pwm-servo: stale commands hold, deactivate disables only when configured", "[pwm]") {
     PwmSettings settings;
     settings.pan_speed_deg_s = 60.0;
     ServoRig rig(settings);

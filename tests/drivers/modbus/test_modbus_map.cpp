@@ -23,7 +23,7 @@ TEST_CASE("32-bit values are split into words in the configured order", "[modbus
     CHECK(to_counts(0.0 / 0.0 * 1.0, 1.0, 32) == 0);
 }
 
-TEST_CASE("presets and the custom map resolve; invalid combinations are refused", "[modbus]") {
+TEST_CASE("presets and the custom map resolve, invalid combinations are refused", "[modbus]") {
     rays::SteadyClock clock;
     std::string error;
     ModbusSettings settings;

@@ -115,11 +115,12 @@ void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
     switch (command.kind) {
     case CommandKind::Tunables: apply_tunables(command.tunables); return;
     case CommandKind::Track:
-        tracker_->start_at({command.a, command.b});
-        mode_ = ControlMode::Automatic;
-        return;
     case CommandKind::TrackBox:
-        tracker_->start_in(command.box);  // the request handler checked it with box_problem()
+        // The user's target replaces whatever is tracked or coasted, from the next frame on.
+        tracker_->release();
+        controller_->lost();
+        if (command.kind == CommandKind::Track) tracker_->start_at({command.a, command.b});
+        else tracker_->start_in(command.box);  // the request handler checked it with box_problem()
         mode_ = ControlMode::Automatic;
         return;
     case CommandKind::Release:

@@ -200,8 +200,9 @@ def compare_sequence(seq, args, work, opencv_py, opencv_ok, log):
                 if box is None:
                     row.update(status="skipped", note="meta.json has no init_box")
                     continue
-                x, y = proc(box[0], box[1])
-                init = [x, y, box[2] / sx, box[3] / sy]
+                # A box's edges scale as lengths: covering pixels x .. x+w-1, its left edge lies at
+                # x - 0.5 in centre coordinates, which maps to x/sx - 0.5 in processing pixels.
+                init = [box[0] / sx, box[1] / sy, box[2] / sx, box[3] / sy]
             log(f"{name}: {label}")
             status, note = run_rays(args.rays_replay, video_path, init, out)
         else:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One servo axis as its drive moves it: a command takes effect latency_s after it is given, velocity
 // changes at most at max_accel, speed stays within max_velocity, a position command follows a
 // trapezoidal profile that stops exactly on its target, and hard end stops halt the axis (velocity 0).

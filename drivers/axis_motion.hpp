@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How one axis moves next under a command: the phase of constant acceleration it is in, computed
 // from its position and velocity alone. AxisDynamics strings these phases together in time.
 #pragma once

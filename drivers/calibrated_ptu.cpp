@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/calibrated_ptu.hpp"
 
 namespace rays::ptu {

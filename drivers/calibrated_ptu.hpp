@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-axis inversion and zero offset, once above every driver: the daemon works in rig angles (pan
 // positive to the right, tilt positive up, zero straight ahead); the unit in its own. For each axis
 //     unit angle = sign · rig angle + zero,   sign = -1 when inverted,

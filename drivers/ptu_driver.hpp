@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one interface every pan/tilt unit driver implements (mock, Modbus, CANopen, ODrive, GPIO),
 // with a lifecycle as ros2_control's hardware interfaces: configure → activate → (write/read)* →
 // deactivate. Units: radians and rad/s; pan positive to the right, tilt positive up.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one place motion limits are enforced, above every driver: PtuLimiter wraps the driver and
 // shapes each command before passing it on.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fastest velocity an axis may be commanded toward a limit and still stop before it, given
 // that the command is held until the next one arrives. Pure arithmetic, for PtuLimiter.
 #pragma once

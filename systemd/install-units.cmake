@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Runs inside cmake --install (included by systemd/CMakeLists.txt's install(CODE)), where
 # CMAKE_INSTALL_PREFIX is the prefix actually installed to. Generates raysd.service with the full
 # paths of the binaries and the config, then installs the units, the sysusers.d entry and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Little-endian packing of CAN payloads (CANopen, CiA 301 §7.1: all numbers little-endian; the
 // ODrive CAN simple protocol likewise) and frame construction.
 #pragma once

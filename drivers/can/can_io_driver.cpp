@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/can_io_driver.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The part every CAN drive driver shares: the transport, its own I/O thread, and the fixed mailboxes
 // between that thread and the frame loop (LatestValue: write/read never wait, block or allocate).
 // A protocol (CANopen, ODrive) implements the io_* hooks, which run on the I/O thread only.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seam between a CAN driver and the bus: plain Linux `struct can_frame`s (<linux/can.h>) sent
 // and received one at a time. SocketCanTransport is the real bus; LoopbackBus (sim/) connects a
 // driver to simulated drives in memory. A transport is used by one I/O thread; only wake() may be

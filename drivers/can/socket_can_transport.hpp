@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CanTransport on a Linux SocketCAN interface ("can0"): a PF_CAN raw socket bound to it,
 // non-blocking, with error frames enabled for bus-off and controller problems (reported by
 // receive() as frames with CAN_ERR_FLAG, see classify_error_frame), and an eventfd for wake().

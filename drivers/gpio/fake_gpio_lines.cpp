@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/gpio/fake_gpio_lines.hpp"
 
 namespace rays::gpio {

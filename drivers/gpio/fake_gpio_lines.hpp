@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A simulated GPIO chip for tests and benches: records every output edge with the monotonic time it
 // was set (in a buffer sized at construction; later edges are only counted), counts the steps a
 // step/dir pair received as a motor would (a rising step edge moves one step, in the direction the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/gpio/fake_pwm_channel.hpp"
 
 namespace rays::gpio {

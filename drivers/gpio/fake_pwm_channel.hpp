@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A simulated PWM channel: records every write (period, duty cycle, enable) with the time it was made
 // in a buffer sized at construction, and fails on demand. Thread-safe (the driver's I/O thread writes
 // while the test reads).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The line-level seam under the GPIO stepper: a chip's output and input lines, each access stamped
 // with the monotonic time it happened. GpiodLines (libgpiod) drives real lines; FakeGpioLines records
 // every edge for tests. Levels are physical (true = high); active-low wiring is the driver's business.

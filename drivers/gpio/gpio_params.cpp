@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/gpio/gpio_params.hpp"
 
 namespace rays::gpio {

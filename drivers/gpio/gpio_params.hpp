@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The [gpio] keys of raysd.ini (driver "gpio-stepper"), one parameter table over GpioSettings.
 #pragma once
 #include "config/param_table.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // [gpio] in raysd.ini: step/dir stepper drivers (A4988, DRV8825, TMC2209 in step/dir mode, or an
 // industrial driver's PUL/DIR/ENA inputs) on the lines of one GPIO chip. Offsets are the chip's
 // line numbers (gpioinfo lists them); -1 means not wired. Dir high moves an axis the positive way.

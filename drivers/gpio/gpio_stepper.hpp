@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Driver "gpio-stepper": two step/dir stepper axes on GPIO lines ([gpio] in raysd.ini). write() and
 // read() only exchange mailboxes with the PulseEngine thread, which alone touches the lines.
 // Lifecycle: configure() opens the chip (outputs low, drivers disabled) and starts the pulse thread;

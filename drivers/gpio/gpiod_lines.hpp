@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GpioLines over libgpiod 1.6 (the v1 API of Debian 12's libgpiod-dev): character-device lines
 // requested one by one; set/get are one ioctl each (GPIOHANDLE_SET/GET_LINE_VALUES_IOCTL).
 #pragma once

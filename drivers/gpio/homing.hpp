@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One axis's homing sequence, without I/O: seek the home switch at the homing speed, stop on it,
 // move off until it releases, move on by the back-off distance, then the position there becomes the
 // home offset. Fails on the opposite switch or after the timeout.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How late the pulse thread's edges come: counts in power-of-two buckets of microseconds after the
 // due time (bucket 0: under 1 µs, bucket k: [2^(k-1), 2^k) µs, the last open-ended). Fixed memory, so
 // the pulse thread can keep it for its whole life; quantiles are a bucket's upper bound.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stepper's I/O thread: the only code touching the lines. It generates the step and dir edges of
 // both axes (StepAxis schedules; clock_nanosleep(TIMER_ABSTIME) on CLOCK_MONOTONIC waits until a learned
 // lead before each edge, a spin the rest of the way; a short spin holds each pulse for pulse_width), polls the limit, home and E-stop inputs every kInputPeriod, runs

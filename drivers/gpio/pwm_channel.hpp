@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seam under the RC-servo driver: one hardware PWM channel (the kernel's PWM sysfs interface,
 // Documentation/ABI/testing/sysfs-class-pwm). SysfsPwmChannel writes the files; FakePwmChannel
 // records every write with its time for tests and benches.

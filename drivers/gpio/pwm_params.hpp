@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The [pwm] keys of raysd.ini (driver "pwm-servo"), one parameter table over PwmSettings.
 #pragma once
 #include "config/param_table.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Driver "pwm-servo": two RC hobby servos on hardware PWM ([pwm] in raysd.ini). Software cannot hold
 // a servo pulse steady; the PWM hardware makes the pulses, the driver only writes duty_cycle.
 // Position commands set the angle (clamped to the configured range); velocity commands are integrated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // [pwm] in raysd.ini: RC hobby servos on hardware PWM channels (sysfs), driver "pwm-servo". A hobby
 // servo reports nothing back, so the position read() gives is an estimate: the servo moving toward
 // its commanded angle at its rated speed.

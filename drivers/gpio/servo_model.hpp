@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One RC servo as the driver sees it, without I/O: the angle range its pulse range maps to (linear),
 // the commanded angle, and the estimated angle — moving toward the command at the rated speed, as a
 // servo gives no feedback. Angles in radians. Time comes in as arguments.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One stepper axis's step schedule, without I/O: what the next edge is (set DIR, or a STEP) and when,
 // from the goal the pulse thread gives it. Time comes in as arguments, so tests can drive it.
 //

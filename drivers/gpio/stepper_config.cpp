@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/gpio/stepper_config.hpp"
 #include "common/angles.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GpioSettings turned into what the pulse thread works with: line indices into one LineRequest and
 // per-axis kinematics in steps, after checking the combination (the factory's errors come from here).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/gpio/sysfs_pwm_channel.hpp"
 
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PwmChannel over /sys/class/pwm/pwmchipN/pwmM/{period,duty_cycle,enable} (export through
 // pwmchipN/export). duty_cycle and enable stay open, so a change is one pwrite().
 #pragma once

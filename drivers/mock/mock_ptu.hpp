@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A simulated pan/tilt unit for tests and for running the daemon without hardware: two AxisDynamics
 // (latency, velocity and acceleration limits, end stops), the lifecycle enforced as a real unit would
 // (write before activate fails and moves nothing), every write recorded, and faults on demand.

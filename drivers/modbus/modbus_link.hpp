@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One Modbus connection (TCP or RTU) over libmodbus, with per-request timeout and retries; errors
 // come back as text naming the request (and the exception code when the drive answered with one).
 // Blocking: used only on the driver's I/O thread (and in configure/deactivate). Not thread-safe.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The [modbus] keys: one table from which INI loading, checking and the sample file come.
 #include <functional>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PtuDriver over Modbus (TCP or RTU). libmodbus is synchronous, so every bus call runs on the
 // driver's own I/O thread; write() and read() only exchange the newest command and the newest
 // state with it through LatestValue mailboxes (no blocking, no allocation).

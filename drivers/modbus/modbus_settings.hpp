@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Settings of the Modbus PTU driver, section [modbus] of raysd.ini (keys in modbus_params()).
 // A preset names a drive family's register map; `custom` takes the map from the pan_* and tilt_*
 // keys. Slave ids and scales always come from the keys: they depend on the wiring and the gearing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Register maps of drive families as their manufacturers publish them. Only what the cited manual
 // shows is filled in; what could not be verified is left absent (-1) and said so, never guessed.
 #include "drivers/modbus/presets.hpp"

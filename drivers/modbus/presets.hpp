@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Named register maps of real drive families (presets.cpp cites each manual).
 #pragma once
 #include <optional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The resolved register map of a pan/tilt unit on Modbus: per axis the slave, the registers and how
 // values are encoded; built from a preset (a drive family's published map) or the custom keys.
 // Shared by the driver and by tools/ptu-sim, so both read one definition.

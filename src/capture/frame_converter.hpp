@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Turns one captured buffer (GREY, YUYV or MJPEG, any size) into the 128×128 processing frame: the
 // crop's luma, area-averaged, and for YUYV and colour MJPEG the same area's chroma at 64×64. Buffers
 // are sized in configure(); convert() allocates nothing outside libjpeg.

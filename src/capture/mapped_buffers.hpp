@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The driver's capture buffers (V4L2 mmap streaming I/O), mapped into this process.
 #pragma once
 #include <cstddef>

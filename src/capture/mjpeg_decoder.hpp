@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MJPEG frames through libjpeg-turbo, decoded at a reduced DCT scale 1/d (the IDCT then yields d×
 // smaller blocks directly): the luma and, for a colour JPEG, Cb and Cr at the decoded luma's size
 // (libjpeg's plain replicating upsampling; they are area-averaged to 64×64 afterwards anyway).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The capture formats the camera understands, their V4L2 four-character codes, and the choice among
 // what a device offers.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "capture/stream_format.hpp"
 
 #include <linux/videodev2.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Format negotiation on an open V4L2 device: capabilities, the format to use, its size and rate.
 #pragma once
 #include <cstdint>

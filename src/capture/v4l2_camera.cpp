@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "capture/v4l2_camera.hpp"
 
 #include <fcntl.h>

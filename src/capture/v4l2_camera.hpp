@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A V4L2 camera as a frame source: mmap streaming of GREY, YUYV or MJPEG at whatever size the driver
 // grants, cropped and area-averaged to 128×128, with the kernel's capture timestamps. When the device
 // goes away the camera says so once, then reopens it with backoff and negotiates the format afresh.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the camera asks the device for. The driver may grant another size or rate; the camera takes it.
 #pragma once
 #include <string>

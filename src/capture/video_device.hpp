@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seam between the camera and the kernel: the handful of calls V4L2 streaming needs, with the
 // syscalls' own conventions (−1 and errno on failure), so tests can stand in for a driver.
 #pragma once

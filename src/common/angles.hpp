@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Degrees, as users write them in raysd.ini and raysctl, and radians, as the code computes.
 #pragma once
 #include <numbers>

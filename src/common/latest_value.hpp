@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The newest value one thread produces for another, handed over without the real-time side ever
 // waiting: it uses the try_ forms, which skip (and say so) when the other thread holds the lock for
 // its short copy; the other side uses the plain forms. Examples: the frame loop publishes its status

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A fixed-size lock-free queue between exactly one producer thread and one consumer thread. It never
 // overwrites: push() on a full ring fails and the producer counts the loss. Used for commands into
 // the frame loop and for telemetry and log lines out of it.

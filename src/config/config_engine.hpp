@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a parameter table gives its settings struct: loading an INI file, get and set by name with
 // the same validation, the JSON echo of every setting, the documented sample file and the listing.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An error found in a configuration file, named by file and line (line 0: the file as a whole).
 #pragma once
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Error messages shared by the INI loader and run-time set, with "did you mean" suggestions.
 #pragma once
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every key of the tracking core's configuration: section [rays] holds the capacities and the
 // Active Rays settings, then [detect] (motion detection), [attention] (plausibility checks that
 // declare the target lost), [track] (which tracker, and prediction) and [snake] (the greedy-snake

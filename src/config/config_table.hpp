@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The parameter table of the tracking core: every field of rays::TrackerConfig.
 #pragma once
 #include "config/param_table.hpp"

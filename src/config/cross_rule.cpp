@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "config/cross_rule.hpp"
 
 #include "config/param_text.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rules between parameters (a count within its capacity, a minimum below its maximum), checked
 // after every key is read and on every run-time change. Rules name parameters rather than struct
 // fields, so they work on any settings struct whose table holds those names.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "config/ini_file.hpp"
 
 #include <ini.h>

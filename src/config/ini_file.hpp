@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads an INI file with libinih and hands each section header and key to a visitor, keeping the
 // line number itself (Debian builds libinih without INI_HANDLER_LINENO). Stops at the first error.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "config/name_suggestion.hpp"
 
 #include <algorithm>

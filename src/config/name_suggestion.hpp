@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "Did you mean ...?" for misspelt section and key names.
 #pragma once
 #include <optional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a configuration parameter is, independent of the struct that holds it: the description
 // that parsing, validation, listing and the sample file all read.
 #pragma once

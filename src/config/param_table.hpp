@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one table of parameters for a settings struct `Root` (PX4 module.yaml style): each entry
 // binds a ParamInfo to a field of Root. Parsing, validation, get/set by name, the JSON echo and
 // the sample file are all generated from it (config_engine.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parameter values as text: the one place where "0.02", "yes" or "360" become typed values and
 // back, with the range check, so the INI file and run-time set accept exactly the same input.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "config/tracker_config_io.hpp"
 
 #include "config/config_engine.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracking core's configuration file and run-time parameters, all driven by tracker_params().
 #pragma once
 #include <nlohmann/json.hpp>

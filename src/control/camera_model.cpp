@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "control/camera_model.hpp"
 
 #include <Eigen/Geometry>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Camera geometry (Eigen): a pinhole camera on a pan/tilt unit. Pixel ↔ viewing ray from the field
 // of view or from calibrated intrinsics, and the rig's rotation, so a contour's centre becomes the
 // target's direction in world angles — what the controller and the Kalman filter work in.

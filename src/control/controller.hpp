@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pointing controllers behind one interface: the paper's proportional controller (§4) as the
 // baseline, and a predictive one (predictive_controller.hpp). The frame loop tells a controller what
 // each frame showed (sighted / lost) and asks it for the unit's velocity command; a controller may

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the unit does while no target is tracked: hold still (so frame differencing can find the
 // target again), and after a timeout either keep holding, search — stepping the pan axis through
 // poses left and right of where the target was lost, dwelling at each so detection can run — or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The unit's recent poses as it reported them, so a frame exposed a while before it reached the loop
 // (camera latency) is paired with where the camera really pointed at its exposure, not with a pose
 // extrapolated back from now. A fixed ring: recording and looking up never allocate.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "control/predictive_controller.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The predictive controller: a Kalman filter (target_filter.hpp) follows the target's direction and
 // angular rate in world coordinates, so the rig's own motion is removed; the command is the target's
 // rate (velocity feed-forward) plus a proportional correction of the error between where the target

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The paper's controller (§4): axis velocities proportional to the target's angular offset from the
 // optical axis in the last frame, zero within the deadband. No prediction: the baseline.
 #pragma once

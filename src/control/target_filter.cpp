@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "control/target_filter.hpp"
 
 #include <Eigen/LU>

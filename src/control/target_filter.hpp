@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A Kalman filter on the target's direction in world angles: per axis (azimuth, elevation) the state
 // is angle and angular rate under a constant-velocity model with white-noise acceleration, or angle,
 // rate and angular acceleration under a constant-acceleration model with white-noise jerk (for targets

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contour extraction with active rays (§2.2–2.4) and its any-time refinement (§2.3, Fig. 6).
 #pragma once
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The attention module of §4.1: watches features of the contour (area, x and y moments, centroid
 // speed) and declares the target lost when they change faster than the configured limits.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The still camera's background: a running average of the smoothed frames, learned where they look
 // like it and not round the target, and from it how much each pixel of a frame looks like foreground
 // (0 … 1). The paper finds the mover by differencing consecutive frames (§4.1); a background learned

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A box start (ContourTracker::start_in): the target's extent as a person draws it round the target,
 // in processing pixels — left, top, width, height — covering the pixels x … x+w−1 and y … y+h−1, as
 // cv::Rect does (pixel centres at integers, so the box's centre is at x + (w−1)/2).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Time enters the core only through this interface, so tests can drive deadlines.
 #pragma once
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The result of one contour extraction: one point per ray, ordered by angle (star-shaped around ref).
 #pragma once
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the frame loop and rays-soak need of a contour tracker, so that active rays (Tracker) and the
 // greedy-snake baseline (snake/greedy_snake_tracker.hpp) run in the same closed loop.
 // Implementations size every buffer in their constructor and never allocate, block or throw in

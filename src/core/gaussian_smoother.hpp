@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gaussian pre-smoothing G_σ of the paper's eq. 4, separable, into a preallocated float image.
 #pragma once
 #include <array>

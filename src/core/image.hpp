@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fixed 128×128 processing frame. x right, y down, pixel centres at integer coordinates.
 #pragma once
 #include <array>

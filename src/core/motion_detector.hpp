@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Initialisation stage of the tracker (paper §4.1): with a static camera, the difference of two
 // consecutive frames is smoothed (3×3 binomial, so the thin crescents of a slowly moving object survive
 // the opening while pixel noise drops), thresholded, cleaned by a morphological opening and closing, and

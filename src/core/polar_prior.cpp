@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/polar_prior.hpp"
 
 #include <algorithm>

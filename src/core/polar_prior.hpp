@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The previous frame's contour, moved by the predicted motion, seen from a new reference point:
 // λ_prior(φ) for every ray, the anchor of the temporal term and of the "no edge" state. A box start's
 // prior instead is the ellipse inscribed in the box, which also bounds where the rays search.

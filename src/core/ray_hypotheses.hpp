@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One ray's 1-D search (§2.2, §2.4): sample the smoothed image along the ray (eq. 6), take the
 // derivative of the profile (eq. 7, 12) and keep up to K contour hypotheses (eq. 13).
 #pragma once

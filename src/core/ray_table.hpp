@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Precomputed ray directions and the coarse-to-fine order in which rays are shot (Fig. 6, §2.3).
 #pragma once
 #include <vector>

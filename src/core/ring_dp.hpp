@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Dynamic programming over the closed ring of rays (§2.4): one state per ray, minimising
 //   E = Σ_i U_i(s_i) + Σ_i a_i (λ_{i+1} − λ_i)² + Σ_i b_i (λ'_{i} − λ'_{i−1})²,
 // the discrete eq. 10 with eq. 9's first (α) and second (β) order terms, λ' = Δλ / Δφ.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the tracker has learned of its target from earlier contours, for the terms beyond the
 // paper's edge energy: edge polarity, the 1-D region term and the contrast that normalises eq. 7.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracking state machine: detecting → tracking → lost → detecting (§4.1), with the motion
 // detector for initialisation, active rays for the contour, the attention module for loss, and a
 // constant-velocity prediction of the reference point (the paper's future work).

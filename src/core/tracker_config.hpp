@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every setting of the tracking core. Capacities size the buffers once; tunables may change later
 // (within the capacities) without allocating. The INI table in config_table.cpp documents each key.
 #pragma once

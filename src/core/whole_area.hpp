@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The target's running area while nothing hid part of it: a contour with at least `share` of it shows
 // the whole target and moves it (by `rate`); a smaller one (a partly hidden target) leaves it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "daemon/base64.hpp"
 
 namespace rays::daemon {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The capture side: a thread that takes frames from the FrameSource and queues them for the frame
 // loop, tells the loop when the camera goes away or comes back, and keeps a status line.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "daemon/command_server.hpp"
 
 #include <fcntl.h>

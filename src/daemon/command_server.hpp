@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The socket thread: a Unix stream socket with one JSON request per line (docs/protocol.md), bounded
 // clients and buffers, `watch` records fanned out from the frame loop's telemetry ring, the frame
 // loop's log lines written out, and the signals (SIGHUP reload, SIGTERM/SIGINT stop) taken through a

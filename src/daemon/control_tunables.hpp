@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The [control] and [ptu] settings as the frame loop uses them: choices parsed into enums and
 // angles into radians, all trivially copyable so they cross into the loop without allocating.
 #pragma once

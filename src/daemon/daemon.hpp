@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // raysd's one process, wired from its config: frame source (capture thread) → frame loop thread
 // (tracker, controller, limited PTU driver) and the socket thread (requests, watch, signals), plus
 // sd_notify. Config errors are found before anything starts; the PTU is stopped on every way out.

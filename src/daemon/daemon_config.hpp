@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Everything raysd reads from its INI file: the tracking core's settings plus one struct per
 // subsystem section. Defaults are the member initialisers; the table in daemon_params.cpp gives
 // each key its unit, range and whether it is a capacity (fixed at start) or a tunable.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every key of raysd.ini beyond the tracking core's ([rays], [detect], [attention], [track]):
 // [camera], [loop], [control], [ptu], [mock], [socket], [log]. Defaults are the member
 // initialisers in daemon_config.hpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The parameter table of raysd's INI file: the tracking core's keys and one section per subsystem.
 #pragma once
 #include <optional>

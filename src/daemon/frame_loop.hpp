@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real-time frame loop: next frame (its only wait, with a timeout) → commands from the socket →
 // track with deadline = capture time + budget → control → limited PTU write and state read →
 // telemetry, status and snapshot out → watchdog. Nothing here allocates, blocks on I/O or throws

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "daemon/frame_queue.hpp"
 
 namespace rays::daemon {

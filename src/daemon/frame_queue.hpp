@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frames from the capture thread to the frame loop: a fixed ring of 128×128 frames with their
 // source index and capture time, allocated once. A recorded source waits for room (no frame lost);
 // a live camera overwrites the oldest unread frame and counts it as dropped. The frame loop copies

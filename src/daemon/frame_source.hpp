@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where frames come from (V4L2 camera, file replay, later the simulated camera), seen from the
 // capture thread: each call delivers one 128×128 frame with the source's own index and its capture
 // time. Sources may block, allocate and decode; the frame loop never calls them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Logging to stderr with sd-daemon priority prefixes ("<4>camera lost"), which journald turns into
 // priorities. A message repeated within the repeat interval is written once; the next time it is
 // written it says how many repeats were held back. Safe from any thread except the frame loop,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hand-overs around the frame loop, owned by the daemon and shared by its three threads:
 // capture → frames → loop; socket thread → commands → loop; loop → telemetry, status, snapshot,
 // log lines → socket thread (woken through an eventfd). All sized once at start.

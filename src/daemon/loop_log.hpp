@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Log lines from the frame loop, which must not block on stderr: formatted into fixed-size entries
 // of a lock-free ring and written by the socket thread (drain()). A full ring drops and counts.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What crosses between the socket thread and the frame loop, all fixed-size and trivially copyable:
 // commands in (through an SpscRing), per-frame telemetry out (SpscRing, for `watch`), and the
 // newest status, statistics and snapshot frame out (LatestValue).

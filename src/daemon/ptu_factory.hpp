@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The PTU driver [ptu] driver names, built from its own section ([mock], [modbus], [canopen],
 // [odrive], [gpio], [pwm]), not yet configured.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // raysd: the tracking daemon. See README.md and docs/protocol.md.
 //   raysd [--config FILE]          run (default /etc/raysd/raysd.ini)
 //   raysd --check-config FILE      validate the file and exit (0, or 78 with file:line)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame loop's real-time options: SCHED_FIFO priority, CPU affinity and mlockall. Each returns
 // what became of the request as one line for the log and `status` ("SCHED_FIFO 40", "refused:
 // Operation not permitted", "not requested"); a refusal is reported, never silently ignored.

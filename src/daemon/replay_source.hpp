@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frames from a recording: a YUV4MPEG2 file, FIFO or standard input, or a folder of PGM/PNG
 // images, cropped and area-scaled to 128×128, delivered at the sequence's frame rate or as fast as
 // the loop takes them, optionally looping. A FIFO or stdin delivers frames as they arrive.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The command socket's requests (docs/protocol.md): one JSON line in, one JSON reply out. Runs on the
 // socket thread; reaches the frame loop only through LoopChannels. Never throws: every bad input
 // becomes an error reply.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The daemon's messages to systemd through libsystemd's sd_notify: READY=1 once the socket is bound
 // and camera and PTU are up, STATUS= lines, STOPPING=1, and WATCHDOG=1 from the frame loop itself so
 // that a stalled loop is restarted. Without NOTIFY_SOCKET (not run by systemd) every call is a no-op.

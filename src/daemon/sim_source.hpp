@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated pan/tilt camera as a frame source of raysd, beside V4L2 and replay: each frame is
 // rendered (src/sim) at the unit's angles as the configured driver last reported them to the frame
 // loop — mock or real — extrapolated at their rate to the capture time, so the loop closes through

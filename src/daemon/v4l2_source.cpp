@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "daemon/v4l2_source.hpp"
 
 namespace rays::daemon {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A V4L2 camera as the daemon's frame source: the capture library's V4l2Camera on the real kernel
 // interface, with the frame index counted here and the kernel's capture timestamps kept.
 #pragma once

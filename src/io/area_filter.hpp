@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The separable box filter both area scalers run: each output pixel of an N×N image is the weighted
 // sum of the source pixels its row and column spans cover (weights summing to 1 per span), rounded.
 // AreaScaler (luma, N = 128) and ChromaScaler (chroma, N = 64) differ only in how they make the spans.

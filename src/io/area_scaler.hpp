@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Maps a crop of the source frame onto the 128×128 processing frame by exact area averaging.
 //
 // Convention (pixel centres at integers on both sides): source = processing * scale + offset with

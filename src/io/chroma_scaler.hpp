@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Maps the chroma planes of a source frame onto the frame's 64×64 Chroma, over exactly the area the
 // luma's AreaScaler maps onto 128×128: the luma crop, in chroma pixels (scaled by chroma / luma size,
 // so 4:2:0 and 4:2:2 crops may start or end inside a chroma pixel), by area averaging with fractional

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A sequence of recorded frames (YUV4MPEG2 stream or a folder of images), read one at a time.
 #pragma once
 #include <memory>

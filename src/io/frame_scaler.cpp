@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "io/frame_scaler.hpp"
 
 namespace rays::io {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A recorded source frame onto the processing frame: the luma's crop to 128×128 (AreaScaler) and,
 // when the source has colour, its chroma over the same area to 64×64 (ChromaScaler).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads a folder of .pgm and .png images as a sequence, in file name order. All must have one size.
 #pragma once
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An RGB copy of a processing frame, enlarged by an integer zoom, to draw contours and markers on.
 // Drawing coordinates are processing pixels (centres at integers); processing pixel (x, y) becomes the
 // zoom×zoom block whose centre is (x·zoom + (zoom−1)/2, y·zoom + (zoom−1)/2) on the canvas.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Netpbm greymaps: P5 (binary, 8- or 16-bit big-endian) and P2 (ASCII), scaled to 8 bits.
 #pragma once
 #include <string>

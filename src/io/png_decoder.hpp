@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PNG to 8-bit luma through libpng: grey, grey+alpha, RGB, RGBA, palette, 1..16 bits per sample.
 #pragma once
 #include <cstdint>

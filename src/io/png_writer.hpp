@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 8-bit PNG output (grey or RGB) to a file or to memory, e.g. for overlays and snapshots.
 #pragma once
 #include <cstdint>

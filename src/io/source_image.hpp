@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A decoded source frame before scaling, any size, row-major: the luma (stride = width) and, where the
 // source has colour, its Cb and Cr planes at their own resolution (stride = chroma_width; 4:2:0 halves
 // both axes, 4:2:2 the width). chroma_width = 0: a mono source.

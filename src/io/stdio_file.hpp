@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Owning handle for a C stdio stream: closes it when the owner goes away.
 #pragma once
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The YUV4MPEG2 stream header: "YUV4MPEG2 W<w> H<h> F<a>:<b> I<i> A<a>:<b> C<colour> X<ext>...".
 #pragma once
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads a YUV4MPEG2 stream frame by frame as data arrives (file, FIFO or stdin; never seeks): the luma
 // plane and, for 8-bit colour streams, the Cb and Cr planes (an alpha plane is skipped).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "io/y4m_writer.hpp"
 
 #include <cerrno>

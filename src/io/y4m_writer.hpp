@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes 8-bit grey frames as a mono YUV4MPEG2 stream ("YUV4MPEG2 W128 H128 F25:1 Ip A1:1 Cmono").
 #pragma once
 #include <cstdint>

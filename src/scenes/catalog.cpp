@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The catalogue of scenes: name, description, length and seed of each script in scripts.cpp.
 #include <array>
 #include <cstdint>

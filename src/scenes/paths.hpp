@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Smooth target paths for the scenes, evaluated at any frame (random access).
 #pragma once
 #include "core/image.hpp"

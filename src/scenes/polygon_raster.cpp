@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scoring a contour polygon against a mask exactly as ../shared/tools/score-contours.py does.
 #include <limits>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Drawing for the scenes: a float canvas with the target's coverage, textures, clutter,
 // anti-aliased shapes, lighting, blur and noise, all deterministic.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reproducible synthetic scenes: 128×128 grey frames with the target's visible mask and truth,
 // drawn from fixed parameters and seeds kept here, so every figure can be reproduced.
 #pragma once

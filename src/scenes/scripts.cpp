@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Speeds in px/frame, sizes in px, grey levels 0–255. Every target moves from frame 0, since the
 // tracker finds it in frame differences.
 #include "scenes/scripts.hpp"

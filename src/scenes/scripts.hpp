@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenes' scripts: each draws frame t of one scene (background, target, disturbances) onto a
 // fresh canvas, from fixed parameters and with `random` seeded for that scene and frame.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shapes as inside-predicates with a bounding box, for anti-aliased drawing (see Canvas::paint).
 // Coordinates in px, x right, y down, pixel centres at integers; angles in rad.
 #pragma once

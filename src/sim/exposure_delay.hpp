@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A camera that delivers each frame `latency_frames` frame periods after its exposure (sim.latency_frames):
 // which exposure the k-th delivered frame shows, the unit's pose at that moment, and how long before
 // its delivery the frame is stamped — the latency for a camera that stamps its exposures (as V4L2

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated camera's static world: an equirectangular grey panorama over the full circle of
 // azimuth (−180…180°) and a band of elevation around the horizon, generated from a seed or loaded
 // from a PNG, and looked up bilinearly by world angles. Allocated once, when made.

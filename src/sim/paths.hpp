@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scripted paths of the simulated targets' centres in world angles, as smooth functions of time
 // (continuous velocity, so a true angular speed exists at every instant). Random access in t.
 #pragma once

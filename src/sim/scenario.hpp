@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated camera's scripted content as functions of time t (seconds): targets moving on
 // paths, fixed occluders in front of them, sensor noise and the camera's exposure. Named
 // scenarios come from make_scenario; a test or tool may also assemble its own.

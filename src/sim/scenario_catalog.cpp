@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The named scenarios. Angles here are in degrees (converted once, by deg()); what the seed changes
 // is the world, the textures and the noise, never a path, so a scenario's guarantees (bounds,
 // visibility, speeds — see tests/sim) hold for every seed.

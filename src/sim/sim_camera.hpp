@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated pan/tilt camera: renders the 128×128 grey view of a scenario's world and targets
 // for given unit angles at time t, with the primary target's visible mask and ground truth, so the
 // daemon's control loop closes through it as on a real rig. Deterministic: the same (t, pan, tilt)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a simulated target looks like: its outline in degrees on the plane tangent to the sphere at
 // its centre (x right, y down), and that outline as one of the inside-predicates of
 // scenes/shapes.hpp in "world pixels" — kWorldPxPerDeg of them per degree — centred on (0, 0).

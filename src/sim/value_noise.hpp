@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Smooth value noise for the simulated world's textures (the panorama and textured targets):
 // random values on an integer lattice, smoothstep-interpolated, deterministic for a seed.
 #pragma once

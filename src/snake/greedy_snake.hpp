@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The greedy active contour of Williams & Shah, "A fast algorithm for active contours and curvature
 // estimation" (CVGIP: Image Understanding 55(1), 1992): every pass moves each point, in turn, to the
 // position of least energy α·E_cont + β_i·E_curv + γ·E_image in a window round it, each term

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "snake/greedy_snake_tracker.hpp"
 
 #include <algorithm>

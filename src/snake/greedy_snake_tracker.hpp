@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The greedy-snake baseline behind the same interface as active rays: the state machine of
 // core/tracker.hpp (detecting → tracking → lost → detecting) with the motion detector to start,
 // the attention module for loss and a constant-velocity prediction, but the contour from the

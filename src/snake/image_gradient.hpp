@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The image gradient the greedy snake sees: central differences of the smoothed frame, and its
 // magnitude |∇I| for the whole frame, computed once per frame into a preallocated image.
 #pragma once

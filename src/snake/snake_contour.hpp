@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The greedy snake as the trackers' common Contour: points in the order of their angle round the
 // centroid (the snake's own ring, started at the smallest angle and walked the way angles grow),
 // with φ, λ, the edge at each point, ref = centroid, and area and centroid of the polygon.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "snake/tracker_factory.hpp"
 
 #include "core/tracker.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one place that picks the contour tracker for track.method: active rays or the greedy snake.
 #pragma once
 #include <memory>

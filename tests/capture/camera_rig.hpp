@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A camera on the fake driver with a fake clock, and the checks every test ends with.
 #pragma once
 #include <catch2/catch.hpp>

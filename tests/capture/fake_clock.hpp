@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A clock that moves only when told to (the fake device moves it while "waiting").
 #pragma once
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "fake_video_device.hpp"
 
 #include <poll.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An in-memory V4L2 capture driver behind the VideoDevice seam. It answers the ioctls the camera uses
 // as a vb2 driver would, holds real buffer memory for mmap, delivers frames the test pushes, and can
 // be unplugged and plugged back with other formats. Misuse a real driver would tolerate or refuse

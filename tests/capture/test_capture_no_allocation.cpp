@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame path allocates nothing once streaming: no operator new per frame in GREY, YUYV or MJPEG,
 // chroma included
 // (libjpeg-turbo's own mallocs inside each decode are not operator new and are not counted here).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frames for the fake driver: drawn luma patterns packed as GREY or YUYV, and JPEGs made with
 // libjpeg-turbo's compressor.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chroma of captured frames through the ioctl-level seam: YUYV's Cb and Cr and a colour MJPEG's
 // reach the frame at 64×64 over the crop's area; GREY delivers none.
 #include <catch2/catch.hpp>

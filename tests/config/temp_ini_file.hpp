@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A configuration file written for one test and removed after it.
 #pragma once
 #include <atomic>

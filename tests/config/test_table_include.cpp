@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How a later section ([camera], [ptu], ...) joins the file: its own table for its own struct,
 // combined with the tracker's table into the table of a struct that holds both.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contour extraction with active rays (§2.2–2.4), its any-time refinement and deadline (§2.3), and
 // the terms beyond the paper (polarity, region, temporal), on frames drawn here with rays_scenes.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The attention module (§4.1): which contour changes count as a lost target.
 #include <catch2/catch.hpp>
 

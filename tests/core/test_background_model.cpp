@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The still camera's background model: what it calls foreground, what it learns and forgets.
 #include <catch2/catch.hpp>
 

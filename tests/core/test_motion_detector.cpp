@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Motion detection of the initialisation stage (paper §4.1) on frames drawn here from fixed seeds.
 #include <catch2/catch.hpp>
 

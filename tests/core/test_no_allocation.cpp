@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The per-frame path allocates nothing: allocations on the thread that calls process() are counted
 // (support/thread_allocation_counter.hpp) while counting is switched on.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The coarse-to-fine ray order of the any-time algorithm (§2.3, Fig. 6).
 #include <catch2/catch.hpp>
 

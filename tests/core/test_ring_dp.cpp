@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ring DP of §2.4 against exhaustive search: exact on rings it enumerates, close to the optimum
 // (and never worse than the bound measured here) with the three-pass solution on larger rings.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Gaussian pre-smoothing G_σ of eq. 4.
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the tracker learns of its target (TargetModel) and what the previous contour tells the next
 // extraction (PolarPrior): the parts a thin target depends on.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracking state machine (§4.1) on the generated scenes: detection, tracking, loss, recovery;
 // point and box starts.
 #include <catch2/catch.hpp>

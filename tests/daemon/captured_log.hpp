@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sends this process's stderr (where raysd logs) to a file while alive, so a test can read the log.
 #pragma once
 #include <filesystem>

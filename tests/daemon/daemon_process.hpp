@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs the real raysd binary for a test: a temporary directory with its config and socket, stderr
 // captured to a file, and helpers to talk to it and to stop it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // When the camera goes away the axes stop, the status says so, and tracking resumes when it comes
 // back: the V4L2 source on the fake kernel driver, and the capture thread and frame loop together
 // on a scripted source, checked on the commands the simulated unit actually received.

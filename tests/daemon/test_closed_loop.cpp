@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame loop's closed-loop behaviour, run in-process against the simulated camera (src/sim) and
 // the mock unit as rays-soak runs it (tools/rays-soak/closed_loop.cpp), but on purely simulated time
 // (each step happens at its frame's capture instant: deterministic, no wall-clock waits), judged on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The two shipped config files: config/raysd.ini documents every key (generated from the parameter
 // table, and kept in step by this test), config/demo.ini runs without hardware as any user.
 #include <catch2/catch.hpp>

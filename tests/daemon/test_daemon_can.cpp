@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real raysd binary with driver = canopen against `ptu-sim --can`, two simulated CiA 402 drives
 // in another process, on a real SocketCAN interface. Runs where a vcan0 interface exists
 // (`ip link add dev vcan0 type vcan && ip link set up vcan0`); skipped, saying why, elsewhere.

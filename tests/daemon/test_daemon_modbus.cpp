@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real raysd binary with driver = modbus, configured only through its INI file, tracking a
 // replayed sequence and moving the simulated unit tools/ptu-sim over loopback TCP and over a pty
 // pair (RTU); checked on the register writes ptu-sim received. And the closed loop through Modbus:

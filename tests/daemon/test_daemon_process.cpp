@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real raysd binary on a replayed sequence with the mock PTU, talked to over its socket as a
 // user would: every command, bad input, many clients, a client that never reads, reloads, signals,
 // sd_notify and socket activation.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 100,000 frames through the daemon's loop, in-process so the frame loop's thread can be watched:
 // clients keep connecting, watching and disconnecting over the real socket meanwhile. Checked against
 // the source's own count: every frame index it delivered reached the tracker, once and in order; no

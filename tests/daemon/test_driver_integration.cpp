@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // raysd with each real driver family configured only through its INI sections, tracking a replayed
 // sequence and moving the simulated unit behind the driver's seam (this machine has no CAN or GPIO):
 // the CANopen and ODrive drivers on an in-memory CAN bus with simulated drives, the stepper on

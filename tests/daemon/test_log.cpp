@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Logging: sd-daemon priority prefixes for journald, the level filter, rate-limited repeats, and the
 // frame loop's non-blocking queue.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A PTU fault seen by the frame loop: the axes get only stop commands, the status and the log say
 // why, and control resumes when the unit recovers. Checked on what the simulated unit received.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame the loop receives from a replayed colour stream carries its chroma through the queue; a
 // mono stream's carries none.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The command socket's request handling, in-process: every command's reply, every error class, and
 // what actually reaches the frame loop's command queue.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A user's track request takes over at once: the frame loop drops the target it tracks and starts
 // where it is told, from the next frame on, not once the old target is lost.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A MockPtu behind a PtuLimiter on a manual clock, configured, active and placed at time 0.
 #pragma once
 #include <catch2/catch.hpp>

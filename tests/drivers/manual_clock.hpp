@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A clock the test moves by hand, and seconds as TimePoints on it.
 #pragma once
 #include <chrono>

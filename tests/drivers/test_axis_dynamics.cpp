@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AxisDynamics: ramps, speed limit, latency, exact position moves, end stops, slicing of time.
 #include <catch2/catch.hpp>
 

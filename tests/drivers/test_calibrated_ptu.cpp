@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Inversion and zero offset between the rig's angles and the unit's, checked on what the simulated
 // unit received and reported.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame path through the drivers allocates nothing: PtuLimiter::write/read over a MockPtu, for
 // 1000 frames of changing commands. This binary counts operator new (tests/io/allocation_counter).
 #include <catch2/catch.hpp>

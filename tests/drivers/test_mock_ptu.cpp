@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MockPtu: records, lifecycle, faults, state from its axis dynamics; DriverStatus messages.
 #include <catch2/catch.hpp>
 

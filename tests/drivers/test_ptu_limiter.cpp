@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PtuLimiter above a MockPtu: soft limits, velocity and acceleration limits, non-finite commands,
 // mode switches, stop, staleness, and holding still until the unit is known.
 #include <catch2/catch.hpp>

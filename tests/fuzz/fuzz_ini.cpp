@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the input as raysd's INI file into load_daemon_config. A file that loads must
 // load the same from its sample_ini echo; an error names a line (0: the file as a whole).
 #include <cstddef>

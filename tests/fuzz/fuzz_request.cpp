@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: request lines into RequestHandler::handle. The input is one line to a fresh
 // handler, then its '\n'-separated lines to another one, so state is reached (watch, set then get).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the fuzz targets share: an invariant check that crashes the fuzzer, and an in-memory file
 // (memfd) rewritten per input that product code opens by path.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the input as a YUV4MPEG2 stream into Y4mReader (up to 64 frames) and its first
 // line into parse_y4m_header. Frames have the header's size; End and Error are final.
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Counts global operator new calls in this test binary, to check that steady-state paths do not allocate.
 #pragma once
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Colour through the replay path: a 4:2:0 YUV4MPEG2 stream's chroma reaches the frame at 64×64 over
 // exactly the luma's area (crop and uneven scaling included), a mono one marks it absent, and
 // scaling allocates nothing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The named scenes: deterministic, long enough, with consistent truth, and each with the property
 // it exists for (visible moving target, speed ramp, growth, occlusion, vanishing).
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Polygon scoring as ../shared/tools/score-contours.py does it: even-odd fill at pixel centres.
 #include <catch2/catch.hpp>
 #include <cmath>

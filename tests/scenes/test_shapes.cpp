@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shapes drawn on a Canvas: anti-aliased coverage, mask and truth, occluders, lighting, blur.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the simulated camera's tests: the demo's 60°×60° camera, named scenarios on their own
 // generated world, and small hand-made scenarios.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The world panorama: generated from a seed, or loaded from a PNG; bilinear lookup by world angles.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Target paths: keyframes with Hermite interpolation, and sums of (chirped) sine waves.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The named scenarios' scripts: bounds, speeds, pauses and exposure, as their descriptions promise.
 #include <catch2/catch.hpp>
 #include <algorithm>

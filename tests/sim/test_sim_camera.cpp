@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated camera's views: determinism, geometry against the camera model, visibility and
 // occlusion, exposure, and the truth's speeds.
 #include <catch2/catch.hpp>

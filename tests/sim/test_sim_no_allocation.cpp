@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SimCamera::render allocates nothing (support/thread_allocation_counter.hpp counts).
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The soak scenario over its 30 minutes: the target passes behind the poles now and then but is
 // never more than about 40 % hidden.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the snake tests share: frames with one drawn target, a clock that advances on every read,
 // and the IoU of a contour with the target's mask.
 #pragma once

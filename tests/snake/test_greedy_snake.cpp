@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The greedy snake of Williams & Shah on drawn frames: it shrinks from a larger circle onto a disc,
 // marks the corners of a square, keeps to its settings' limits and stops before its deadline.
 #include <catch2/catch.hpp>

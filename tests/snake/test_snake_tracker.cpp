@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GreedySnakeTracker in the loop: detection, tracking a slow disc, losing a target that jumps
 // beyond its window, keeping a fast one with predict_next, the per-frame deadline, and box starts.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // make_tracker picks the contour tracker that track.method names.
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Waits in real time for what another thread or process is to do: polls until it is done, for at
 // most a generous bound. The bound is there for a loaded machine, not to measure how soon it happens;
 // a test never relies on a fixed sleep being long enough.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Catch2 2 has no skip: a test that cannot run here says why and exits with 77, which CTest's
 // SKIP_RETURN_CODE reports as skipped. Each TEST_CASE runs as its own CTest entry.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replaces every global allocation function of the test binary it is linked into (see the header).
 #ifndef RAYS_SANITIZED
 #include "support/thread_allocation_counter.hpp"

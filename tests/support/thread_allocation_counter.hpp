@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Counts heap allocations (operator new and malloc/calloc/realloc) made on one thread while
 // counting is on, to prove a path allocates nothing. Linking thread_allocation_counter.cpp replaces
 // the global allocator of that test binary. Not available under AddressSanitizer, which owns malloc.

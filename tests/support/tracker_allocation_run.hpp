@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The no-allocation run both contour trackers are held to: a generated scene's frames are rendered
 // first, then the tracker processes them with allocation counting on (thread_allocation_counter.hpp),
 // gets `changed` tunables half-way through and, three quarters through, is released and started in

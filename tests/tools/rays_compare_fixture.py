@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Tiny sequence folders in the realset layout (seq.y4m, masks.y4m, boxes.csv, meta.json), written by the
 rays-compare tests themselves, pure Python."""
 import json

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracker on the development scenes of ../shared/devset, scored like score-contours.py: mean IoU
 // of the contour polygon against the ground-truth masks, 0 for frames not tracking. Guards the
 // figures reached so far against regressions; skipped where ../shared is absent.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """rays-compare's scorer (tools/rays_compare/score.py) on a 4-frame sequence this test writes, against
 numbers worked out by hand below.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """tools/rays-compare without python3-opencv: a PYTHONPATH folder whose cv2.py raises ImportError stands
 in for its absence (for every Python the tool tries). The OpenCV trackers must be skipped with the one
 SKIPPED line, and the rays runs on a tiny sequence this test writes still scored, by the same scorer.

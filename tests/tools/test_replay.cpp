@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-replay end to end: a generated sequence in, JSON Lines and overlays out, errors as one line.
 #include <catch2/catch.hpp>
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracker's contour quality on the generated scenes (the acceptance figures), measured
 // against the scenes' own ground-truth masks. Frames not in the tracking state score 0.
 #include <catch2/catch.hpp>

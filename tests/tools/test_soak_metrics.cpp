@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-soak's judgement of a run, on hand-made records: the loss rule (the true centre leaves the
 // image, or the contour is off it for more than 5 frames), re-acquisition, the centred fraction and
 // the fastest speed kept before the first loss.

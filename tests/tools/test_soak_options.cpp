@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-soak's command line: the run modes and what they refuse.
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ptu-bench "canopen" and "odrive": the real drivers on the in-memory CAN bus with simulated drives
 // (drivers/can/sim). Latency = from PtuDriver::write() to the moment the frame carrying that command
 // (RPDO1 with the new target velocity; Set_Input_Vel) goes onto the bus to the simulated drive. Each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Latency benches of the GPIO drivers against their recording fakes: "gpio-stepper" from write() to
 // the first STEP edge of the new command (the fake lines' own timestamp; the axis starts from rest, so
 // this is the pulse thread's poll delay plus wake-up), "pwm-servo" from write() to the duty_cycle write.

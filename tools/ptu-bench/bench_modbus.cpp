@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Benches "modbus-tcp" and "modbus-rtu": the real Modbus driver against ptu-sim's unit served from a
 // thread in this process (loopback TCP; RTU over a socat pty pair at 115200 baud). Latency is from
 // PtuDriver::write() to the simulator receiving the pan velocity write, both on the steady clock.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "gpio-step-rate": what the stepper's pulse thread sustains on this machine. Both axes are held at
 // kMaxStepRateHz against FakeGpioLines (`commands` velocity commands 2 ms apart, far above the top
 // speed); the samples are every STEP edge's time after its due time, as the engine's histogram keeps

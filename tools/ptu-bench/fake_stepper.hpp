@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The gpio-stepper both GPIO benches drive: two axes on FakeGpioLines, pan STEP 0 / DIR 1, tilt STEP 2 /
 // DIR 3, the rest at the driver's defaults unless a bench changes them; configured and activated.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ptu-bench: command-to-bus latency per driver. Each driver's file registers one bench that writes
 // `commands` commands through the real driver against a peer (the PTU simulator, an in-process drive
 // simulator or a line-level seam) and returns, per command, the time from PtuDriver::write() to the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ptu-bench [--commands N] [--json] [NAME...]: runs the registered driver latency benches (all, or
 // those named) and prints median, p99 and max command-to-bus latency per driver.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ptu-sim --can IFACE: the simulated CiA 402 drives of drivers/can/sim on a real SocketCAN
 // interface (a vcan or a CAN adapter), for raysd's canopen driver in another process.
 #pragma once

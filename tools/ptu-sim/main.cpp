@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ptu-sim: a simulated pan/tilt unit on Modbus (or CANopen, --can) for tests, benches and trying raysd
 // without hardware.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ptu-sim's Modbus side: a TCP server on loopback or an RTU slave on a serial device (one end of a
 // pty pair), answering every slave of the map through libmodbus, with injectable faults.
 #pragma once

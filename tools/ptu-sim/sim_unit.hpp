@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated pan/tilt unit behind ptu-sim: holding registers per slave laid out as the register
 // map says, two AxisDynamics driven by the writes the map gives meaning to, the drive-side
 // communication watchdog, a drive-fault bit, and every received register write reported with its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The any-time curve (§2.3, Fig. 6): contour quality against the time budget per frame.
 #pragma once
 #include <vector>

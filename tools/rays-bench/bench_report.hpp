@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-bench output: a human-readable table, or one JSON object.
 #pragma once
 #include <cstdio>

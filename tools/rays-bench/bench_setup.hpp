@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a benchmark run works on: the tracker configuration and the scene's frames, rendered up front
 // so that rendering never enters a timing.
 #pragma once

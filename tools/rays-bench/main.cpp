@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-bench: the paper's Table 2 (time per frame against Δφ) and the any-time curve, measured on
 // this machine over a generated scene.
 #include <cstdio>

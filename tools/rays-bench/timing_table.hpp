@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table 2 of the paper: time to process one frame for different ray spacings Δφ.
 #pragma once
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The JSON Lines rays-replay writes: a header describing the mapping and settings, then a record per frame.
 #pragma once
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-replay: runs the tracker over a recorded sequence and writes what it found as JSON Lines,
 // optionally with overlay PNGs for a person to look at.
 #include <algorithm>

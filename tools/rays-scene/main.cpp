@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-scene: writes one of the generated scenes as mono YUV4MPEG2, with its masks and truth
 // (gt.csv: frame,cx,cy,area, as in ../shared/devset). Bad arguments: one line on stderr, exit 2.
 #include <charconv>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One closed-loop run as on a rig, headless: the simulated camera renders each frame at the mock
 // unit's actual angles, raysd's own FrameLoop tracks and steers (controller, PtuLimiter,
 // CalibratedPtu, MockPtu with its dynamics), and every frame's ground truth is recorded.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-soak: the closed loop (simulated pan/tilt camera, raysd's frame loop, mock unit) run headless
 // faster than real time, judged against the simulator's ground truth. See soak_metrics.hpp for the
 // rules and README.md for the figures.

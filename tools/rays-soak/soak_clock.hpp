@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays-soak's clock: simulated time between frames, real time within one. set() jumps to a frame's
 // capture time; from there now() runs on with the steady clock, so the tracker's deadline is a real
 // per-frame budget while the run as a whole goes faster than real time. Never runs backwards.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a closed-loop run achieved, judged only against the simulator's ground truth, never the
 // tracker's own state. A loss is the true target centre leaving the image, or the contour's centre
 // more than 10 % of the image size from the true centre (or no contour) for more than 5 frames,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An optional picture of a run for a person: three panels over time — pan with the target's
 // azimuth, tilt with its elevation, and the pointing error — written as an RGB PNG; and the
 // records behind it as CSV.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """rays-compare: the Active Rays tracker (rays-replay) beside OpenCV's CSRT, KCF and MOSSE on sequence folders,
 all scored by one scorer (score.py). See tools/rays-compare --help."""
 import argparse

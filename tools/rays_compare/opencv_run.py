@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """One OpenCV tracker over a YUV4MPEG2 sequence, for rays-compare (run as its own process, so that it can
 use whichever Python has python3-opencv, and so that its memory and threads end with it).
 

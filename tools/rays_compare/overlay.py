@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Side-by-side overlay video for a person to look at, pure Python: one tile per tracker, each the
 sequence's frame (enlarged) with that tracker's contour or box drawn in its colour, the ground-truth box
 (where there is one) in grey, and a label; the first tile shows the ground truth alone. Written as a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The one scorer of rays-compare, pure Python (no numpy): every tracker's run is scored here the same way.
 
 Coordinates are the sequence's pixels with pixel centres at integers (as boxes.csv and rays-replay's

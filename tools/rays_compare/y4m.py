@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """YUV4MPEG2 reading and writing in pure Python (no numpy), for rays-compare's scorer and overlay.
 
 A frame is a tuple of planes (Y, or Y, Cb, Cr), each a bytes object of row-major samples.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // raysctl: the command-line client of raysd's command socket (docs/protocol.md).
 // Exit status: 0 done; 1 raysd answered with an error; 2 bad usage; 3 cannot connect;
 // 4 no or unreadable reply; 5 a local file could not be written.

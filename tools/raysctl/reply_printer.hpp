@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // raysctl's output: the reply line itself with --json, else a short human-readable form.
 #pragma once
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // raysctl's connection to raysd: a Unix stream socket, one JSON object per line each way, every
 // wait bounded by a timeout.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/canopen/canopen_axis.hpp"
 
 #include <algorithm>

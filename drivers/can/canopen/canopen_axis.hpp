@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One CiA 402 drive as raysd runs it, on the driver's I/O thread: bring-up by SDO (configuration
 // plan), NMT start, the controlword/statusword state machine to Operation enabled, targets by RPDO,
 // actual values by TPDO, its heartbeat watched, faults reset and the bring-up retried with backoff

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PtuDriver for two CiA 402 drives over CANopen (SocketCAN). The I/O thread (CanIoDriver) runs
 // both CanopenAxis state machines and produces raysd's own heartbeat (0x700 + master_id, state
 // Operational, every master_heartbeat_ms: CiA 301 §7.2.8.3.2.2), which each drive consumes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CANopen identifiers and object indices used here (CiA 301 v4.2, CiA 402-2 v4.1).
 #pragma once
 #include <cstdint>

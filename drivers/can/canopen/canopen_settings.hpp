@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // [canopen] in raysd.ini: two CiA 402 drives (pan, tilt) on one SocketCAN interface.
 // Drive units: positions in counts of the axis (after any gearing), velocities in counts/s (the
 // CiA 402 default factor group: velocity unit = position unit per second).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/canopen/cia402.hpp"
 
 namespace rays::canopen {

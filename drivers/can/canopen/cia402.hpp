@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CiA 402 drive state machine seen through the statusword and driven by the controlword,
 // CiA 402-2 §6.1 (Figure 4: states and transitions; Table 30: statusword state bits; Table 27:
 // controlword commands).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The SDO writes that configure one CiA 402 drive for raysd, in order: quick stop, heartbeats and
 // the communication watchdog (CiA 301 §7.5.2.32-33, CiA 402-2 §6.2.6), modes and profile limits
 // (CiA 402-2 §6.2.3, §12.4, §14.4), PDO mappings (CiA 301 §7.4.8: disable the PDO, clear the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/canopen/sdo.hpp"
 
 #include "drivers/can/can_frame_codec.hpp"

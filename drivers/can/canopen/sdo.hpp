@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SDO expedited transfers, CiA 301 §7.2.4.3: download (write ≤ 4 bytes) and upload (read) requests,
 // their replies and abort codes (§7.2.4.3.17, Table 22).
 #pragma once

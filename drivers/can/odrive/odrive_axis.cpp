@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/odrive/odrive_axis.hpp"
 #include "common/angles.hpp"
 

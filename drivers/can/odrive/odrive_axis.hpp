@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One ODrive axis as raysd runs it, on the driver's I/O thread: its heartbeat watched, armed by
 // Clear_Errors, trajectory limits, Set_Controller_Mode and Set_Axis_State(CLOSED_LOOP_CONTROL),
 // then a set-point every cycle (Set_Input_Vel, or Set_Input_Pos with the trapezoidal trajectory),

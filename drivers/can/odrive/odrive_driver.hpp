@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PtuDriver for two ODrive axes over the CAN simple protocol (SocketCAN). The I/O thread
 // (CanIoDriver) runs both OdriveAxis state machines; on a fault on one axis the other is stopped
 // too; commands move the axes again once every fault has cleared and a fresh command arrives.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ODrive "CAN simple" protocol (ODrive docs, "CAN Protocol"; firmware v0.5.x
 // Firmware/communication/can/can_simple.hpp): 11-bit id = node_id << 5 | cmd_id, little-endian
 // payloads, positions in turns and velocities in turns/s of the motor.

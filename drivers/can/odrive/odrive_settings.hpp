@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // [odrive] in raysd.ini: two ODrive axes (pan, tilt) on one SocketCAN interface, CAN simple protocol.
 //
 // Set on each ODrive beforehand with odrivetool (not settable through CAN simple, then

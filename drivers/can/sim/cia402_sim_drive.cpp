@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/sim/cia402_sim_drive.hpp"
 
 #include <cmath>

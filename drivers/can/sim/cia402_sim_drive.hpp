@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A simulated CiA 402 drive on the CAN bus, for tests and the bench: NMT (boot-up, start,
 // pre-operational), an SDO server over a small object dictionary, PDOs as the master maps them
 // (RPDO contents applied, TPDOs sent by their event timer), the CiA 402 state machine with profile

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/sim/loopback_bus.hpp"
 
 #include <linux/can/error.h>

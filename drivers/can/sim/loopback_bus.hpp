@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An in-memory CAN bus for tests and the bench: endpoints are CanTransports; a frame one endpoint
 // sends is delivered to every other endpoint (as on a real bus, not back to its sender) and recorded
 // with its time and sender. Faults on demand: ENOBUFS on an endpoint's sends, a muted endpoint (its

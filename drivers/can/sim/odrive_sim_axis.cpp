@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/sim/odrive_sim_axis.hpp"
 
 #include "drivers/can/can_frame_codec.hpp"

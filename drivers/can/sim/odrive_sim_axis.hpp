@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A simulated ODrive axis on the CAN bus (CAN simple protocol, firmware v0.5 behaviour): idle or
 // closed loop control, velocity (passthrough) and position (trapezoidal trajectory) control,
 // heartbeat and encoder estimates sent cyclically, Clear_Errors, and the communication watchdog

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/sim/sim_bus_host.hpp"
 
 namespace rays::can {

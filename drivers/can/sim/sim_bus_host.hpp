@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs simulated CAN nodes (drives) on their own thread, on one endpoint of a LoopbackBus: each
 // received frame goes to every node, and every node ticks each millisecond.
 #pragma once

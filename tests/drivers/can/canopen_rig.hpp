@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A CANopen driver on an in-memory bus with two simulated CiA 402 drives (pan node 1, tilt node 2),
 // with short timings so that faults show within a fraction of a second.
 #pragma once

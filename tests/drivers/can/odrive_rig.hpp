@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An ODrive driver on an in-memory bus with two simulated ODrive axes (pan node 0, tilt node 1).
 #pragma once
 #include <chrono>

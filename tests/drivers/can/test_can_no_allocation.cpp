@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // write() and read() of the CAN drivers allocate nothing on the frame-loop thread.
 #include <catch2/catch.hpp>
 

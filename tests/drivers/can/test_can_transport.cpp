@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SocketCanTransport (skipped where the kernel has no CAN support) and the in-memory LoopbackBus.
 #include <catch2/catch.hpp>
 #include <cerrno>

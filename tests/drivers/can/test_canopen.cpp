@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CANopen driver against two simulated CiA 402 drives on the in-memory bus. Every check on
 // what the unit did reads the simulated drives (their received frames and their motion), not the
 // driver's own account.

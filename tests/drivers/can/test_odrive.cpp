@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ODrive driver against two simulated ODrive axes on the in-memory bus; checks read the
 // simulated axes (their received frames and motion).
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A GpioStepper over FakeGpioLines on the steady clock, with the lines of a small rig: pan STEP 0,
 // DIR 1, tilt STEP 2, DIR 3, shared ENABLE 4; limit switches pan 10/11, tilt 12/13; E-stop 14.
 // 44.4 steps/deg (200 × 16 microsteps, 5:1 gear), 8000 steps/s top speed, 32000 steps/s².

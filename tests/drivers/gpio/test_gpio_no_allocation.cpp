@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // write() and read() of both GPIO drivers allocate nothing on the frame thread.
 #include <catch2/catch.hpp>
 

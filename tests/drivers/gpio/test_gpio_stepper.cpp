@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gpio-stepper against FakeGpioLines: what the lines received (edges with their times, the steps a
 // motor would have made), not the driver's own account. The pulse thread runs in real time, so these
 // tests assert only what holds however late it wakes on a loaded machine (counts, order, no interval

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GpiodLines against a real GPIO character device, and the [gpio]/[pwm] parameter tables.
 #include <catch2/catch.hpp>
 

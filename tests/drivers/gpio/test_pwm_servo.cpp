@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pwm-servo against FakePwmChannel (every write with its time) and SysfsPwmChannel against a
 // temporary directory laid out like /sys/class/pwm.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // StepAxis and Homing on virtual time (no thread, no lines): exact step counts, speeds and intervals.
 #include <catch2/catch.hpp>
 

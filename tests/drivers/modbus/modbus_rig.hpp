@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A Modbus driver against a peer in a child process: the [modbus] section is one INI file that
 // both the driver (through modbus_params()) and ptu-sim (--config) read.
 #pragma once

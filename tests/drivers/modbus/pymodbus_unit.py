@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """An independent pan/tilt unit for the Modbus driver's tests: python3-pymodbus serves the custom
 test map (tests/drivers/modbus/modbus_rig.hpp: slaves 1 and 2, velocity at 0..1, actual position
 at 10..11 as 32 bit high word first, status at 20) and logs every register write it receives.

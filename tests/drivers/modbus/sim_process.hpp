@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs tools/ptu-sim (or the pymodbus peer) as a child process for a test: waits for its "ready"
 // line, sends control commands on its stdin, reads its state and the CSV of what it received.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Register maps: presets resolve, encodings round-trip in both word orders, bad maps are refused.
 #include <catch2/catch.hpp>
 

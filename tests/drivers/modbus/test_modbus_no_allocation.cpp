@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // write() and read() of the Modbus driver allocate nothing on the calling (frame) thread while the
 // I/O thread talks to ptu-sim. This binary counts allocations per thread.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The driver against an independent Modbus implementation (python3-pymodbus), so that a misreading
 // of the protocol cannot be mirrored by ptu-sim, which shares the driver's libmodbus and map code.
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Modbus driver end to end against tools/ptu-sim (real libmodbus on both sides), over loopback
 // TCP and over a pty pair (RTU). Every check reads what the simulated unit received (its CSV
 // record) or how its axes move, never the driver's own account.

@@ -16,10 +16,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int run(const std::string& command) { return WEXITSTATUS(std::system((command + " 2>" + (fs::temp_directory_path() / "rays-replay-err").string()).c_str())); }
+// Where run() puts the command's standard error: one file per test process, as CTest runs the test
+// cases of this binary side by side.
+fs::path error_file() { return fs::temp_directory_path() / ("rays-replay-err-" + std::to_string(::getpid())); }
+
+int run(const std::string& command) { return WEXITSTATUS(std::system((command + " 2>" + error_file().string()).c_str())); }
 
 std::string last_error() {
-    std::ifstream in(fs::temp_directory_path() / "rays-replay-err");
+    std::ifstream in(error_file());
     std::string line;
     std::getline(in, line);
     return line;

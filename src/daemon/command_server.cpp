@@ -158,6 +158,7 @@ void CommandServer::accept_clients() {
     for (;;) {
         int fd = accept4(socket_.fd(), nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
         if (fd < 0) return;
+        if (clients_.size() >= static_cast<std::size_t>(settings_.max_clients)) reap_hung_up_clients();
         if (clients_.size() >= static_cast<std::size_t>(settings_.max_clients)) {
             std::string refusal = serialise(RequestHandler::error(
                 "too_many_clients", "the server has " + std::to_string(settings_.max_clients) + " clients already"));
@@ -169,6 +170,18 @@ void CommandServer::accept_clients() {
         clients_.push_back(Client{fd, {}, {}, false, {}});
         send(clients_.back(), RequestHandler::banner());
     }
+}
+
+// A client that connected and closed while the server was busy (a probe, a raysctl that timed out)
+// still holds a place until its end is read; when connections arrive together, it would turn one
+// away. Its hang-up (POLLHUP: closed, not merely shut down for writing, as a client still waiting
+// for replies may be) is looked for here; what it sent before is still handled, nothing is lost.
+void CommandServer::reap_hung_up_clients() {
+    for (Client& client : clients_) {
+        pollfd hang_up{client.fd, 0, 0};  // POLLHUP and POLLERR are reported whatever is asked for
+        if (poll(&hang_up, 1, 0) == 1 && (hang_up.revents & (POLLHUP | POLLERR)) != 0) read_client(client);
+    }
+    std::erase_if(clients_, [](const Client& client) { return client.fd < 0; });
 }
 
 void CommandServer::read_client(Client& client) {

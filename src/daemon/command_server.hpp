@@ -58,6 +58,8 @@ private:
     void send(Client& client, const nlohmann::json& message);
     void flush(Client& client);
     void drop(Client& client);
+    // At the client limit: reads, then drops, the clients that have hung up since the last poll.
+    void reap_hung_up_clients();
     void fan_out_telemetry();
     bool take_signals();  // false when asked to stop
 

@@ -299,6 +299,25 @@ TEST_CASE("many clients are served up to the limit, a client that never reads is
     CHECK(daemon.wait(10s) == 0);
 }
 
+TEST_CASE("a client that hung up before raysd read it holds no place: connections arriving together are all served") {
+    Setup s = make_setup("hung-up", "max_clients = 2\n");
+    DaemonProcess daemon = start(s);
+    REQUIRE(wait_for_socket(s.socket, 10s));
+    REQUIRE(eventually([&] { return LineConnection(s.socket).read_json(1s).has_value(); }));
+    // raysd stopped: the three connections wait in the listen queue, the first already closed, and
+    // reach the server in one accept loop (as on a loaded machine, where they arrive faster than it polls).
+    daemon.signal(SIGSTOP);
+    { LineConnection probe(s.socket); }
+    LineConnection first(s.socket), second(s.socket);
+    daemon.signal(SIGCONT);
+    CHECK((*first.read_json(10s))["class"] == "version");
+    CHECK((*second.read_json(10s))["class"] == "version");
+    LineConnection third(s.socket);  // and the limit still holds
+    CHECK((*third.read_json(10s))["error"]["code"] == "too_many_clients");
+    daemon.signal(SIGTERM);
+    CHECK(daemon.wait(10s) == 0);
+}
+
 TEST_CASE("SIGHUP reloads tunables without dropping the track, a bad reload is refused and changes nothing") {
     Setup s = make_setup("reload");
     DaemonProcess daemon = start(s);

@@ -2,6 +2,7 @@
 #include "daemon/daemon.hpp"
 
 #include <sys/signalfd.h>
+#include <sysexits.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -117,9 +118,9 @@ int Daemon::run() {
         return 1;
     }
     if (!parts_.ptu) parts_.ptu = make_ptu_driver(config_, clock_, error);
-    if (!parts_.ptu) {
+    if (!parts_.ptu) {  // the driver's section does not work: a config error, as --check-config says
         log(Priority::Err, "ptu.driver %s: %s", config_.ptu.driver.c_str(), error.c_str());
-        return 1;
+        return EX_CONFIG;
     }
     RealtimeReport memory = lock_memory(config_.loop.lock_memory);
     if (memory.refused) log(Priority::Warning, "loop.lock_memory: %s", memory.text.c_str());

@@ -32,7 +32,8 @@ void block_daemon_signals();
 std::unique_ptr<FrameSource> open_frame_source(const DaemonConfig& config, const Clock& clock, std::string& error);
 
 // Runs until SIGTERM/SIGINT (or request_stop() from another thread). Returns the exit status:
-// 0 after a clean stop, 1 when the camera, PTU or socket cannot be brought up.
+// 0 after a clean stop, 78 (EX_CONFIG) when the configured PTU driver cannot be made from its section
+// (as --check-config reports it), 1 when the camera, PTU or socket cannot be brought up.
 class Daemon {
 public:
     Daemon(DaemonConfig config, std::string config_path, DaemonParts parts, const Clock& clock);

@@ -133,6 +133,10 @@ TEST_CASE("config errors name file and line and exit with 78, --check-config val
     DaemonProcess driver({raysd_binary().string(), "--check-config", bad.string()}, {}, s.dir / "driver.log");
     CHECK(driver.wait(5s) == 78);
     CHECK(driver.log().find("[modbus] does not work for ptu.driver = modbus: ") != std::string::npos);
+    // Run with it, raysd exits as for any bad file: 78, which raysd.service does not restart.
+    DaemonProcess run_driver({raysd_binary().string(), "--config", bad.string()}, {}, s.dir / "run-driver.log");
+    CHECK(run_driver.wait(5s) == 78);
+    CHECK(run_driver.log().find("ptu.driver modbus: ") != std::string::npos);
 }
 
 TEST_CASE("raysd tells systemd READY=1 once serving, feeds the watchdog, and stops cleanly on SIGTERM") {

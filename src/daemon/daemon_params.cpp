@@ -121,7 +121,7 @@ void add_control(ParamTable<DaemonConfig>& table) {
 void add_ptu(ParamTable<DaemonConfig>& table) {
     table.section("ptu", ParamKind::Capacity, &DaemonConfig::ptu)
         .add_choice("driver", &PtuSettings::driver, "mock|modbus|canopen|odrive|gpio-stepper|pwm-servo",
-                    "pan/tilt unit driver, configured in the section of the same name (mock: a simulated unit)")
+                    "pan/tilt unit driver, configured in its section: [mock], [modbus], [canopen], [odrive], [gpio] (gpio-stepper) or [pwm] (pwm-servo)")
         .add("pan_inverted", &PtuSettings::pan_inverted, "the unit's pan axis turns left for positive angles")
         .add("tilt_inverted", &PtuSettings::tilt_inverted, "the unit's tilt axis turns down for positive angles")
         .add("pan_zero_deg", &PtuSettings::pan_zero_deg, "deg", -360, 360,

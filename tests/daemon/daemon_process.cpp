@@ -16,14 +16,16 @@
 
 #include "io/y4m_writer.hpp"
 #include "scenes/scene.hpp"
+#include "support/emulator.hpp"
 
 namespace rays::test {
 
 DaemonProcess::DaemonProcess(const std::vector<std::string>& argv, const std::map<std::string, std::string>& env,
                              const std::filesystem::path& log_path)
     : log_path_(log_path) {
+    std::vector<std::string> command = emulated(argv);
     std::vector<char*> args;
-    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
+    for (const std::string& arg : command) args.push_back(const_cast<char*>(arg.c_str()));
     args.push_back(nullptr);
     pid_ = fork();
     if (pid_ == 0) {
@@ -38,7 +40,7 @@ DaemonProcess::DaemonProcess(const std::vector<std::string>& argv, const std::ma
         sigset_t none;
         sigemptyset(&none);
         sigprocmask(SIG_SETMASK, &none, nullptr);
-        execv(args[0], args.data());
+        execvp(args[0], args.data());
         _exit(127);
     }
 }

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "daemon_process.hpp"
+#include "support/emulator.hpp"
 #include "support/eventually.hpp"
 #include "support/skip.hpp"
 
@@ -57,7 +58,7 @@ std::string read_file(const fs::path& path) {
 // Runs raysctl and returns its exit status; its stdout goes to `out`.
 int raysctl(const Setup& s, const std::string& args, std::string* out = nullptr) {
     fs::path captured = s.dir / "raysctl.out";
-    std::string command = raysctl_binary().string() + " --socket " + s.socket.string() + " " + args + " > " +
+    std::string command = emulated(raysctl_binary().string()) + " --socket " + s.socket.string() + " " + args + " > " +
                           captured.string() + " 2>&1";
     int status = std::system(command.c_str());
     if (out != nullptr) *out = read_file(captured);
@@ -114,7 +115,7 @@ DaemonProcess start(const Setup& s, std::map<std::string, std::string> env = {})
 
 TEST_CASE("config errors name file and line and exit with 78, --check-config validates") {
     Setup s = make_setup("config-errors");
-    CHECK(std::system((raysd_binary().string() + " --check-config " + s.config.string() + " > /dev/null").c_str()) == 0);
+    CHECK(std::system((emulated(raysd_binary().string()) + " --check-config " + s.config.string() + " > /dev/null").c_str()) == 0);
     fs::path bad = s.dir / "bad.ini";
     std::ofstream(bad) << "[rays]\nalpha = 0.1\nalpah = 0.2\n";
     DaemonProcess check({raysd_binary().string(), "--check-config", bad.string()}, {}, s.dir / "check.log");
@@ -244,7 +245,7 @@ TEST_CASE("every command works over the socket, and raysctl's exit codes tell th
     CHECK(read_file(s.dir / "snap.png").substr(1, 3) == "PNG");
     CHECK(raysctl(s, "watch 3", &out) == 0);
     CHECK(std::count(out.begin(), out.end(), '\n') == 3);
-    CHECK(std::system((raysctl_binary().string() + " --socket " + (s.dir / "none.sock").string() +
+    CHECK(std::system((emulated(raysctl_binary().string()) + " --socket " + (s.dir / "none.sock").string() +
                        " status 2>/dev/null").c_str()) >> 8 == 3);
     daemon.signal(SIGTERM);
     CHECK(daemon.wait(10s) == 0);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "drivers/ptu_driver.hpp"
+#include "support/emulator.hpp"
 #include "support/eventually.hpp"
 
 extern char** environ;
@@ -49,9 +50,10 @@ public:
         posix_spawn_file_actions_addclose(&actions, to_child[1]);
         posix_spawn_file_actions_addclose(&actions, from_child[0]);
         std::vector<char*> argv;
-        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        std::vector<std::string> command = emulated(args);
+        for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));
         argv.push_back(nullptr);
-        if (posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
+        if (posix_spawnp(&pid_, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
         posix_spawn_file_actions_destroy(&actions);
         close(to_child[0]);
         close(from_child[1]);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scenes/scene.hpp"
+#include "support/emulator.hpp"
 
 using namespace rays;
 using namespace rays::scenes;
@@ -76,6 +77,7 @@ TEST_CASE("Every named scene exists once, renders deterministically and has at l
 }
 
 TEST_CASE("Each scene's truth matches its mask, targets stay in frame, visible and moving", "[scenes]") {
+    rays::test::skip_under_emulation("every frame of every scene rendered; the single-scene cases render on arm64");
     for (const auto name : scene_names()) {
         INFO(name);
         const auto scene = make_scene(name);

@@ -8,6 +8,7 @@
 
 #include "common/angles.hpp"
 #include "sim/scenario.hpp"
+#include "support/emulator.hpp"
 
 using namespace rays;
 using namespace rays::sim;
@@ -59,7 +60,7 @@ TEST_CASE("patrol: the walker crosses ±40° at 7–15 deg/s with pauses, and th
         az_hi = std::max(az_hi, at.position.azimuth * kDegPerRad);
         const double speed = speed_deg_s(s, t);
         fastest = std::max(fastest, speed);
-        if (speed == 0) paused_s += kStep;
+        if (speed < 1e-9) paused_s += kStep;  // not == 0: arm64 contracts a·b + c into one fused multiply-add
         second_present += s.targets[1].presence.at(t);
     }
     CHECK(az_lo == Approx(-40.0).margin(0.01));
@@ -89,6 +90,7 @@ TEST_CASE("ramp: the peak speed of each swing grows from 5 to 400 deg/s over 160
 }
 
 TEST_CASE("soak: the target stays within ±100° azimuth and its elevation band at 2–20 deg/s for 30 minutes") {
+    rays::test::skip_under_emulation("30 minutes of scenario time; the shorter scenario cases run on arm64");
     // name, elevation band (deg), most of the time allowed under 2 deg/s
     for (const auto& [name, low, high, slow_share] :
          {std::tuple{"soak", 24.0, 40.0, 0.15}, std::tuple{"soak-clutter", -10.0, 30.0, 0.1}}) {
@@ -113,6 +115,7 @@ TEST_CASE("soak: the target stays within ±100° azimuth and its elevation band 
 }
 
 TEST_CASE("soak: the exposure drifts and steps down for the second half of every 240 s") {
+    rays::test::skip_under_emulation("the whole soak scenario sampled; the shorter scenario cases run on arm64");
     const Scenario s = named("soak");
     CHECK(s.exposure.gain(0.0) == Approx(1.0));
     CHECK(s.exposure.gain(97.0 / 4) == Approx(1.15));

@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "sim_rig.hpp"
+#include "support/emulator.hpp"
 
 using namespace rays;
 using namespace rays::sim;
@@ -233,6 +234,7 @@ TEST_CASE("the patrol walker's legs swing as it walks") {
 }
 
 TEST_CASE("render time", "[timing]") {
+    rays::test::skip_under_emulation("a timing report, and emulated time says nothing of an arm64 board");
     for (std::string_view name : sim::scenario_names()) {
         const auto camera = named_camera(name);
         auto view = std::make_unique<SimView>();

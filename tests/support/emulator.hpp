@@ -3,9 +3,14 @@
 // in a native build, through CMAKE_CROSSCOMPILING_EMULATOR (qemu-aarch64) in a cross build,
 // since the machine running the tests has no binfmt handler for the target's executables.
 #pragma once
+#include <unistd.h>
+
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "support/skip.hpp"
 
 namespace rays::test {
 
@@ -18,19 +23,27 @@ inline std::vector<std::string> emulator_words() {
     return words;
 }
 
-// argv with the emulator put in front of the first program of this build in it: argv[0] itself, or
-// the program a wrapper such as systemd-socket-activate starts; host programs (python3, socat) run
-// as they are. The emulator's first word is looked up in PATH: start the result with execvp or
-// posix_spawnp.
+// argv with the emulator put in front of the first program of this build in it (an executable file
+// under the build directory, not a config or socket path there): argv[0] itself, or the program a
+// wrapper such as systemd-socket-activate starts; host programs (python3, socat) run as they are.
+// The emulator's first word is looked up in PATH: start the result with execvp or posix_spawnp.
 inline std::vector<std::string> emulated(std::vector<std::string> argv) {
     const std::string built = std::string(RAYS_BINARY_DIR) + "/";
     for (auto arg = argv.begin(); arg != argv.end(); ++arg) {
-        if (!arg->starts_with(built)) continue;
+        if (!arg->starts_with(built) || !std::filesystem::is_regular_file(*arg) || ::access(arg->c_str(), X_OK) != 0)
+            continue;
         std::vector<std::string> words = emulator_words();
         argv.insert(arg, words.begin(), words.end());
         break;
     }
     return argv;
+}
+
+// Under emulation, skips the calling test case (support/skip.hpp): for long simulations whose
+// arithmetic the short cases of the same binary already run on the target, and which qemu-user
+// would take minutes over. `why` names what stays covered.
+inline void skip_under_emulation(const std::string& why) {
+    if (!emulator_words().empty()) skip("under qemu-user: " + why);
 }
 
 // A shell command line that starts a program of this build, with the emulator in front, for std::system.

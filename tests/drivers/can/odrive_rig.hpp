@@ -34,12 +34,15 @@ inline odrive::OdriveSimConfig odrive_sim_config(int node, double ratio, double 
     return config;
 }
 
+// tilt_silent: the tilt axis never sends a frame, muted before the host's thread starts (muting it
+// afterwards races with the first heartbeat, which the driver would then have seen).
 struct OdriveRig {
-    explicit OdriveRig(const odrive::OdriveSettings& s = fast_odrive_settings(), double watchdog_timeout_s = 0.1)
+    explicit OdriveRig(const odrive::OdriveSettings& s = fast_odrive_settings(), double watchdog_timeout_s = 0.1,
+                       bool tilt_silent = false)
         : settings(s),
           pan(odrive_sim_config(s.pan_node_id, s.pan_motor_turns_per_axis_turn, watchdog_timeout_s)),
           tilt(odrive_sim_config(s.tilt_node_id, s.tilt_motor_turns_per_axis_turn, watchdog_timeout_s)),
-          host(bus, {&pan, &tilt}),
+          host(bus, {&pan, &muted_if(tilt, tilt_silent)}),
           driver_end(bus.add_endpoint()) {
         std::string error;
         driver = odrive::make_odrive_driver(settings, bus.transport_for(driver_end), clock, error);
@@ -65,6 +68,11 @@ struct OdriveRig {
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         }
         return false;
+    }
+
+    static odrive::OdriveSimAxis& muted_if(odrive::OdriveSimAxis& axis, bool silent) {
+        if (silent) axis.mute(true);
+        return axis;
     }
 
     odrive::OdriveSettings settings;

@@ -141,8 +141,7 @@ TEST_CASE("odrive: a stale command stream stops the axes", "[odrive]") {
 }
 
 TEST_CASE("odrive: configure fails when an axis sends no heartbeat", "[odrive]") {
-    OdriveRig rig;
-    rig.tilt.mute(true);
+    OdriveRig rig(rays::test::fast_odrive_settings(), 0.1, true);
     const ptu::DriverStatus status = rig.driver->configure();
     CHECK_FALSE(status.ok);
     INFO(status.what());

@@ -9,7 +9,7 @@
 #include "allocation_counter.hpp"
 #include "io/frame_reader.hpp"
 #include "io/frame_scaler.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 using namespace rays;
 using rays::io::FrameReader;

@@ -10,7 +10,7 @@
 #include "io/frame_reader.hpp"
 #include "io/image_folder_reader.hpp"
 #include "io/png_writer.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 using rays::io::FrameReader;
 using rays::io::open_frames;

@@ -7,7 +7,7 @@
 
 #include "io/png_decoder.hpp"
 #include "io/png_writer.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 TEST_CASE("encode_png writes a PNG that decodes to the same pixels and matches write_png's file") {
     std::vector<std::uint8_t> grey(31 * 17);

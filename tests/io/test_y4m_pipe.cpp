@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "io/frame_reader.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 using rays::io::FrameReader;
 using rays::io::open_frames;

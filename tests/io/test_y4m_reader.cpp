@@ -11,7 +11,7 @@
 #include "io/frame_reader.hpp"
 #include "io/y4m_reader.hpp"
 #include "io/y4m_writer.hpp"
-#include "temp_dir.hpp"
+#include "support/temp_dir.hpp"
 
 using rays::io::FrameReader;
 using rays::io::open_frames;

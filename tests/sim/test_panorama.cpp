@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "../io/temp_dir.hpp"
+#include "support/temp_dir.hpp"
 #include "common/angles.hpp"
 #include "io/png_writer.hpp"
 #include "sim/panorama.hpp"

@@ -11,14 +11,20 @@
 #include <vector>
 
 #include "scenes/scene.hpp"
+#include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-// Where run() puts the command's standard error: one file per test process, as CTest runs the test
-// cases of this binary side by side.
-fs::path error_file() { return fs::temp_directory_path() / ("rays-replay-err-" + std::to_string(::getpid())); }
+// Where run() puts the command's standard error: a directory of this test process's own (CTest runs
+// the test cases of this binary side by side), removed when it ends.
+const rays::test::TempDir& scratch() {
+    static const rays::test::TempDir dir;
+    return dir;
+}
+
+fs::path error_file() { return scratch().path() / "stderr"; }
 
 int run(const std::string& command) { return WEXITSTATUS(std::system((command + " 2>" + error_file().string()).c_str())); }
 
@@ -30,8 +36,7 @@ std::string last_error() {
 }
 
 fs::path temp_dir(const char* name) {
-    const fs::path dir = fs::temp_directory_path() / (std::string("rays-test-") + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
+    const fs::path dir = scratch().path() / name;
     fs::create_directories(dir);
     return dir;
 }

@@ -14,6 +14,7 @@
 #include "config/config_engine.hpp"
 #include "drivers/modbus/modbus_ptu.hpp"
 #include "sim_process.hpp"
+#include "support/temp_dir.hpp"
 
 namespace rays::test {
 
@@ -29,13 +30,10 @@ inline int free_tcp_port() {
     return ntohs(address.sin_port);
 }
 
+// This test process's files (the simulator's INI files and records), removed when it ends.
 inline std::string scratch_dir() {
-    static const std::string dir = [] {
-        std::string path = "/tmp/rays-modbus-test-" + std::to_string(getpid());
-        std::filesystem::create_directories(path);
-        return path;
-    }();
-    return dir;
+    static const TempDir dir;
+    return dir.path().string();
 }
 
 // Two slaves, 32 bit values high word first, status fault bit 0x08, enable, watchdog register 100.

@@ -11,7 +11,7 @@ namespace rays::test {
 class TempDir {
 public:
     TempDir() {
-        std::string pattern = (std::filesystem::temp_directory_path() / "rays-io-XXXXXX").string();
+        std::string pattern = (std::filesystem::temp_directory_path() / "rays-test-XXXXXX").string();
         if (mkdtemp(pattern.data()) == nullptr) std::abort();
         path_ = pattern;
     }

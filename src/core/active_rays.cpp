@@ -14,6 +14,7 @@ constexpr float kEdgeCap = 2.0f;           // an edge this many times the rim co
 constexpr float kSpreadFloor = 6.0f;       // grey: the least spread the region term assumes
 constexpr float kContrastShare = 0.25f;    // of |outside − inside|: how far the inside may stray from the target's grey
 constexpr float kUnseenRegion = 1.0f;      // region term of an edge whose inside the ray could not see (of 0…5)
+constexpr float kAppearanceCap = 4.0f;     // the colour term gains no more than this many clear samples
 constexpr float kCrossingTolerance = 0.15f;
 constexpr int kCheckEvery = 8;             // rays between deadline checks
 constexpr float kMinRadiusPx = 8.0f;       // least contour scale for the smoothness and temporal terms
@@ -73,6 +74,10 @@ int ActiveRays::next_active(int ray) const {
     return ray;
 }
 
+float ActiveRays::appearance_cost(float nats) const {
+    return static_cast<float>(t_.appearance_weight) * std::min(nats / LikelihoodMap::kMaxLogOdds, kAppearanceCap);
+}
+
 void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPrior& prior, bool use_temporal,
                        const TargetModel& model) {
     Hypothesis* hyp = &hyp_[static_cast<std::size_t>(ray) * capacity_.max_hypotheses];
@@ -83,7 +88,7 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
     const float limit = std::min(use_temporal && !prior.open(ray) ? kSearchScale * prior.lambda(ray) + kSearchMarginPx
                                                                   : static_cast<float>(t_.lambda_max_px),
                                  prior.search_to(ray));
-    const int n = profiler_.shoot(image, foreground_, m, table_.cos_at(ray), table_.sin_at(ray), prior.search_from(ray),
+    const int n = profiler_.shoot(image, foreground_, likelihood_, m, table_.cos_at(ray), table_.sin_at(ray), prior.search_from(ray),
                                   limit, hyp, end);
     hyp_count_[ray] = n;
     lambda_end_[ray] = end;
@@ -121,6 +126,9 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
         // (iv) where the still camera's background is known: an edge where the ray leaves the
         // foreground costs less, one where it enters the foreground more.
         c -= static_cast<float>(t_.foreground_weight) * e.foreground_step;
+        // (v) with the target's colours learned: a rim away from where the ray's colours split into
+        // target and background costs the log-likelihood it gives up, in units of one clear sample.
+        c += appearance_cost(e.appearance);
         if (use_temporal) {
             // (iii) temporal coupling toward the previous contour, bounded so a real change can win.
             const float d = (e.lambda - lp) / (0.2f * radius + 2.0f);
@@ -129,7 +137,8 @@ void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPri
         cost[h] = c;
         lam[h] = e.lambda;
     }
-    cost[n] = static_cast<float>(t_.none_cost);  // "no edge on this ray": held at the expected λ
+    // "No edge on this ray": held at the expected λ, which the target's colours may also speak against.
+    cost[n] = static_cast<float>(t_.none_cost) + appearance_cost(profiler_.appearance_at(lp));
     lam[n] = lp;
     // Until the DP has seen this ray, its cheapest state stands for it (orders the next level's rays).
     lambda_out_[ray] = lam[std::min_element(cost, cost + n + 1) - cost];

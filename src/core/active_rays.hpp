@@ -24,6 +24,8 @@ public:
     void allow_jumps(bool allowed) { allow_jumps_ = allowed; }
     // The still camera's foreground (BackgroundModel) for the extractions that follow; null: none.
     void use_foreground(const FloatImage* foreground) { foreground_ = foreground; }
+    // The target's colour likelihood (AppearanceModel) for the extractions that follow; null: none.
+    void use_likelihood(const LikelihoodMap* likelihood) { likelihood_ = likelihood; }
 
     // Extracts the contour round m on the smoothed image. `prior` says where the contour is expected
     // (the previous frame's contour, or a circle); `use_temporal` enables the pull toward it; `model`
@@ -37,6 +39,8 @@ public:
 private:
     void shoot(int ray, const FloatImage& image, Point m, const PolarPrior& prior, bool use_temporal,
                const TargetModel& model);
+    // (v) of shoot(): a rim that gives up `nats` of the colour split's likelihood (Hypothesis::appearance).
+    float appearance_cost(float nats) const;
     void solve(float radius, const PolarPrior& prior);
     void write_contour(Point m, Contour& out) const;
     int previous_active(int ray) const;
@@ -51,6 +55,7 @@ private:
     bool allow_jumps_ = true;             // see allow_jumps()
     bool jumps_ = false;                  // the ring DP truncates its smoothness at the jump cost
     const FloatImage* foreground_ = nullptr;  // see use_foreground()
+    const LikelihoodMap* likelihood_ = nullptr;  // see use_likelihood()
     float rim_contrast_ = 0;              // normaliser of eq. 7 for this extraction
 
     std::vector<unsigned char> active_;   // per ray: shot at the current reference point

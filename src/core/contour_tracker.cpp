@@ -3,6 +3,8 @@
 
 namespace rays {
 
+const Chroma kNoChroma{};
+
 const char* to_string(TrackState s) {
     switch (s) {
         case TrackState::Detecting: return "detecting";

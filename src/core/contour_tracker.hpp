@@ -14,6 +14,8 @@
 namespace rays {
 
 enum class TrackState { Detecting, Tracking, Lost };
+
+extern const Chroma kNoChroma;  // a mono frame's colour: none
 const char* to_string(TrackState s);
 
 struct FrameResult {
@@ -53,8 +55,11 @@ public:
     // still from the previous frame's capture to this one's.
     virtual void allow_detection(bool allowed) = 0;
 
-    // Processes one frame; refinement stops before `deadline`.
-    virtual const FrameResult& process(const GreyImage& frame, TimePoint deadline) = 0;
+    // Processes one frame, with its colour where the source has some (chroma.present); refinement
+    // stops before `deadline`.
+    virtual const FrameResult& process(const GreyImage& frame, const Chroma& chroma, TimePoint deadline) = 0;
+    // A frame without colour.
+    const FrameResult& process(const GreyImage& frame, TimePoint deadline) { return process(frame, kNoChroma, deadline); }
 
     virtual const FrameResult& result() const = 0;
     virtual const Contour& contour() const = 0;  // valid while result().has_contour

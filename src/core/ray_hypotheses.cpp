@@ -11,6 +11,7 @@ constexpr float kEdgeMarginPx = 1.0f;  // samples this close to an edge belong t
 constexpr float kOutsideBandPx = 4.0f; // the band that should look like background
 constexpr float kForegroundReachPx = 2.0f;  // the foreground is read this far inside and outside an edge
 constexpr float kRimStep = 0.5f;            // an edge whose foreground drops this much is a rim
+constexpr float kSplitReachPx = 1.5f;       // an edge this near the colour split stands for it
 
 }  // namespace
 
@@ -21,6 +22,7 @@ RayProfiler::RayProfiler(const TrackerCapacity& capacity)
       prefix_sq_(capacity.max_samples + 1),
       foreground_step_(capacity.max_samples),
       rank_(capacity.max_samples),
+      log_odds_sum_(capacity.max_samples + 1),
       candidates_(capacity.max_samples) {}
 
 bool RayProfiler::configure(const RaysTunables& t) {
@@ -35,8 +37,9 @@ bool RayProfiler::configure(const RaysTunables& t) {
     return true;
 }
 
-int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Point m, double c, double s,
-                       float lambda_from, float lambda_limit, Hypothesis* out, float& lambda_end) {
+int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, const LikelihoodMap* likelihood,
+                       Point m, double c, double s, float lambda_from, float lambda_limit, Hypothesis* out,
+                       float& lambda_end) {
     constexpr double last = kFrameSize - 1;
     // The ray ends where it leaves the image: λ ≤ the distance to the border along (c, s).
     double reach = lambda_limit;
@@ -51,8 +54,10 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Po
     const float x_first = static_cast<float>(m.x) + lambda_min_ * cx, y_first = static_cast<float>(m.y) + lambda_min_ * sy;
     const float dx = step_ * cx, dy = step_ * sy;
     float x = x_first, y = y_first;
-    prefix_[0] = prefix_sq_[0] = 0.0f;
+    prefix_[0] = prefix_sq_[0] = log_odds_sum_[0] = 0.0f;
     for (int j = 0; j < n; ++j, x += dx, y += dy) {
+        // With colour: the running sum of the log-odds the colour split is found from (below).
+        if (likelihood != nullptr) log_odds_sum_[j + 1] = log_odds_sum_[j] + likelihood->at(x, y);
         const int x0 = std::clamp(static_cast<int>(x), 0, kFrameSize - 2);
         const int y0 = std::clamp(static_cast<int>(y), 0, kFrameSize - 2);
         const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
@@ -66,6 +71,8 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Po
         prefix_sq_[j + 1] = prefix_sq_[j] + v * v;
     }
     lambda_end = lambda_min_ + static_cast<float>(std::max(0, n - 1)) * step_;
+    shot_samples_ = n;
+    split_ = -1;
     if (n < 3) return 0;
 
     // eq. 7/12: H = −|∂ρ/∂λ|², central differences; candidates are local maxima of |∂ρ/∂λ|.
@@ -102,6 +109,31 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Po
         if (step >= kRimStep && (rim < 0 || step > foreground_step_[candidates_[rim]])) rim = ci;
     }
     if (rim > 0) std::rotate(candidates_.begin(), candidates_.begin() + rim, candidates_.begin() + rim + 1);
+
+    // The colour split: the rim that makes samples 0 … b−1 the target and b … n−1 the background is
+    // the most likely one where the log-odds summed from m, S(b), is largest (the ray's 1-D region
+    // competition; a texture-based energy on the 1-D signal, as the paper's future work proposes).
+    // Its nearest edge candidate goes first; with none near, the split itself is a hypothesis.
+    int split = -1;
+    if (likelihood != nullptr) {
+        split = first;  // boundary b: between samples b − 1 and b
+        for (int b = first; b <= n; ++b)
+            if (log_odds_sum_[b] > log_odds_sum_[split]) split = b;
+        const auto half_steps = [&](int j) { return std::abs(2 * j + 1 - 2 * split); };  // edge j to the split
+        int near = -1;
+        for (int ci = 0; ci < nc; ++ci) {
+            const int j = candidates_[ci];
+            if (0.5f * step_ * static_cast<float>(half_steps(j)) > kSplitReachPx) continue;
+            if (near < 0 || half_steps(j) < half_steps(candidates_[near])) near = ci;
+        }
+        split_ = split;
+        if (near < 0) {  // no edge there: the split's own sample, however weak its gradient
+            near = nc;
+            candidates_[nc++] = std::clamp(split, first, n - 2);
+            foreground_step_[candidates_[near]] = 0.0f;
+        }
+        std::rotate(candidates_.begin(), candidates_.begin() + near, candidates_.begin() + near + 1);
+    }
     const int margin = static_cast<int>(std::ceil(kEdgeMarginPx / step_));
     const int band = std::max(1, static_cast<int>(std::lround(kOutsideBandPx / step_)));
     int kept = 0;
@@ -118,6 +150,7 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Po
         hyp.lambda = lam;
         hyp.grad = grad_[j];
         hyp.foreground_step = foreground_step_[j];
+        hyp.appearance = appearance_at(lam);
         // The inside: samples [in_end / 3, in_end), the outer two thirds of the way to the edge. Near m
         // the ray may start on something thin in front of the target (a pole across its middle),
         // and the part next to the rim is what tells the target's inside from the background.
@@ -129,6 +162,15 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, Po
         hyp.outside_mean = o1 > o0 ? (prefix_[o1] - prefix_[o0]) / static_cast<float>(o1 - o0) : -1.0f;
     }
     return kept;
+}
+
+float RayProfiler::appearance_at(float lambda) const {
+    if (split_ < 0) return 0.0f;
+    // A rim at λ splits the ray after sample (λ − λ_min) / step: between the sums either side of it.
+    const float at = std::clamp((lambda - lambda_min_) / step_ + 0.5f, 0.0f, static_cast<float>(shot_samples_));
+    const int b = std::min(static_cast<int>(at), shot_samples_ - 1);
+    const float f = at - static_cast<float>(b);
+    return log_odds_sum_[split_] - (log_odds_sum_[b] + f * (log_odds_sum_[b + 1] - log_odds_sum_[b]));
 }
 
 }  // namespace rays

@@ -24,6 +24,10 @@ constexpr int kStillFrames = 8;          // ... this many frames stands still (s
 constexpr int kWatchWindowFrames = 20;   // while it does, the motion found in and away from it is counted
 constexpr int kMotionAwayFrames = 5;     // per this many frames: this often away (and twice as often as in
                                          // it), and the track is not on the mover
+constexpr float kColourRate = 0.1f;      // weight of the newest contour in the learned colours (Staple: 0.04)
+constexpr double kSeedInside = 0.3;      // of a new target's radius: surely the target round its start point
+constexpr double kSeedRingFrom = 2.0;    // ... and from this many radii ...
+constexpr double kSeedRingTo = 3.0;      // ... to this many, mostly not
 
 }  // namespace
 
@@ -84,6 +88,28 @@ void Tracker::reinit() {
     detector_.reset(tunables_.detect);
 }
 
+bool Tracker::learn_colours(float rate) {
+    return tunables_.rays.appearance_weight > 0.0 && appearance_.learn(*frame_, *chroma_, contour_, rate);
+}
+
+void Tracker::look_with_colours() {
+    const bool colours = tunables_.rays.appearance_weight > 0.0 && chroma_->present && appearance_.valid();
+    if (colours) appearance_.likelihood(*frame_, *chroma_, likelihood_);
+    rays_.use_likelihood(colours ? &likelihood_ : nullptr);
+}
+
+void Tracker::seed_colours(Point m, double inside_px, double ring_from_px, double ring_to_px) {
+    const bool seeded = tunables_.rays.appearance_weight > 0.0 &&
+                        appearance_.seed(*frame_, *chroma_, m, inside_px, ring_from_px, ring_to_px);
+    if (seeded) look_with_colours();
+    else forget_colours();
+}
+
+void Tracker::forget_colours() {
+    appearance_.reset();
+    rays_.use_likelihood(nullptr);
+}
+
 void Tracker::remember_contour() {
     tracked_area_ = std::max(0.0, contour_.area);
     // What the target looks like whole: an occluder in front of part of it does not get learned here.
@@ -121,12 +147,21 @@ Point Tracker::best_start(Point centre, double radius, TimePoint deadline) {
     return best;
 }
 
-bool Tracker::begin_track(Point m, double radius, bool search, bool same_target, TimePoint deadline) {
-    if (!same_target) model_.reset();
+bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline) {
+    if (!same_target) {
+        model_.reset();
+        forget_colours();
+    }
     prior_.set_circle(std::max(radius, kStartRadiusPx));
-    if (search) m = best_start(m, radius, deadline);
-    if (!same_target) model_.seed(smoothed_, m);
-    return first_contour(m, same_target, deadline);
+    if (from == StartFrom::Detector) m = best_start(m, radius, deadline);
+    if (!same_target) {
+        model_.seed(smoothed_, m);
+        // Round m is the target, further out mostly not: where that tells colours apart, the first
+        // rays find where the target's colours end even where grey shows no edge there.
+        radius = std::max(radius, kStartRadiusPx);
+        seed_colours(m, kSeedInside * radius, kSeedRingFrom * radius, kSeedRingTo * radius);
+    }
+    return first_contour(m, from, same_target, deadline);
 }
 
 bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
@@ -136,19 +171,35 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     prior_.set_box(box);
     model_.reset();
     model_.seed_inside(smoothed_, box);
-    return first_contour(box.centre(), false, deadline);
+    // Well inside the box is the target; a ring round the box, from its corners out, is not.
+    const double half_diagonal = 0.5 * std::hypot(box.w, box.h);
+    seed_colours(box.centre(), kSeedInside * std::min(box.w, box.h), half_diagonal, 1.5 * half_diagonal);
+    return first_contour(box.centre(), StartFrom::Person, false, deadline);
 }
 
-bool Tracker::first_contour(Point m, bool same_target, TimePoint deadline) {
+bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline) {
     attention_.reset();
     velocity_ = {};
+    // A person's start is the target even where few rays find an edge on it (a target about as grey
+    // as what is round it): the contour holds the prior there, and the track begins.
+    AttentionTunables limits = tunables_.attention;
+    if (from == StartFrom::Person) limits.max_none_fraction = 1.0;
     rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
-    if (attention_.check(contour_, contour_.centroid, tunables_.attention) != nullptr) return false;
+    const char* reason = attention_.check(contour_, contour_.centroid, limits);
+    if (reason != nullptr && !same_target && appearance_.valid()) {
+        // The seeded colours did not make a target of it: grey alone, as without colour.
+        forget_colours();
+        rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
+        reason = attention_.check(contour_, contour_.centroid, limits);
+    }
+    if (reason != nullptr) return false;
     if (!same_target) {
         model_.reset();
         whole_area_.reset();
         whole_grey_ = 0.0;
     }
+    // A new target's colours come from its first contour, replacing the seed's guess.
+    learn_colours(same_target ? kColourRate : 1.0f);
     model_.learn(contour_, scratch_);
     remember_contour();
     return true;
@@ -159,11 +210,12 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     // and shows only part of itself) may let a fresh start find it; a fresh start finds anything, so
     // it must look like the target did: about as grey inside, about as big.
     const TargetModel kept = model_;
+    const AppearanceModel kept_colours = appearance_;
     const double area = tracked_area_;
     const WholeArea whole = whole_area_;
     const double whole_grey = whole_grey_;
     if (!kept.valid) return false;
-    const bool found = begin_track(m, radius, false, false, deadline);
+    const bool found = begin_track(m, radius, StartFrom::Prediction, false, deadline);
     auto mean_inside = [](const TargetModel& model) {
         float sum = 0.0f;
         for (float v : model.inside_mean) sum += v;
@@ -181,6 +233,8 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     whole_grey_ = whole_grey;
     if (!alike) {  // not the target: as if it had not been tried
         model_ = kept;
+        appearance_ = kept_colours;
+        look_with_colours();
         tracked_area_ = area;
     }
     return alike;
@@ -229,6 +283,7 @@ void Tracker::track(TimePoint deadline) {
     const Point moved{contour_.centroid.x - last.x, contour_.centroid.y - last.y};
     velocity_ = {velocity_.x + kVelocityRate * (moved.x - velocity_.x), velocity_.y + kVelocityRate * (moved.y - velocity_.y)};
     model_.learn(contour_, scratch_);
+    learn_colours(kColourRate);
     remember_contour();
 }
 
@@ -272,11 +327,14 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     return motion_outside_ < kMotionAwayFrames || motion_outside_ <= 2 * motion_inside_;
 }
 
-const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) {
+const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma, TimePoint deadline) {
     ++result_.frame;
     result_.lost_reason = nullptr;
     result_.detection = {};
+    frame_ = &frame;
+    chroma_ = &chroma;
     smoother_.smooth(frame, smoothed_);
+    look_with_colours();
     // The frame's mean grey, in eight running sums: one sum is a chain of 16384 dependent adds.
     std::array<float, 8> sums{};
     for (int i = 0; i < kFramePixels; i += 8)
@@ -307,12 +365,12 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
             // A re-acquisition tries the learned looks, then (just after the loss) afresh.
             auto reacquire = [&](Point m) {
-                return begin_track(m, last_radius, false, true, deadline) ||
+                return begin_track(m, last_radius, StartFrom::Prediction, true, deadline) ||
                        (untracked_frames_ <= kFreshReacquireFrames && reacquire_afresh(m, last_radius, deadline));
             };
             found = reacquire_   ? reacquire(*start_point_)
                     : start_box_ ? begin_box_track(*start_box_, deadline)
-                                 : begin_track(*start_point_, kStartRadiusPx, false, false, deadline);
+                                 : begin_track(*start_point_, kStartRadiusPx, StartFrom::Person, false, deadline);
             // Something thin in front of the target's middle (a pole) hides the point itself: look
             // to either side of it, and above and below.
             for (int side = 0; !found && reacquire_ && side < 4; ++side) {
@@ -325,7 +383,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, TimePoint deadline) 
         } else if (has_previous_ && detection_allowed_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;
-            if (d.found) found = begin_track(d.centre, d.radius_px, true, false, deadline);
+            if (d.found) found = begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
         }
         result_.state = found ? TrackState::Tracking : TrackState::Detecting;
         result_.has_contour = found;

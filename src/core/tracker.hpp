@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/active_rays.hpp"
+#include "core/appearance_model.hpp"
 #include "core/attention.hpp"
 #include "core/background_model.hpp"
 #include "core/clock.hpp"
@@ -36,26 +37,41 @@ public:
     void allow_detection(bool allowed) override;
 
     // Processes one frame; refinement stops before `deadline`. No allocation, no exceptions.
-    const FrameResult& process(const GreyImage& frame, TimePoint deadline) override;
+    using ContourTracker::process;
+    const FrameResult& process(const GreyImage& frame, const Chroma& chroma, TimePoint deadline) override;
 
     TrackState state() const { return result_.state; }
     const FrameResult& result() const override { return result_; }
     const Contour& contour() const override { return contour_; }
     const ActiveRays& rays() const { return rays_; }
+    const AppearanceModel& appearance() const { return appearance_; }
 
 private:
     Point best_start(Point centre, double radius, TimePoint deadline);
+    // Where a new track's start point came from: a person (start_at, start_in) says the target is
+    // there, whatever edges it shows; the motion detector's region is searched round for the target;
+    // a prediction (reacquire_at) is where the lost target should be.
+    enum class StartFrom { Person, Detector, Prediction };
     // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks.
-    bool begin_track(Point m, double radius, bool search, bool same_target, TimePoint deadline);
+    bool begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline);
     // Starts a track in a box: the box's ellipse the first contour's prior, its inside the target's looks.
     bool begin_box_track(const Box& box, TimePoint deadline);
     // The new track's first contour from m with the prior and looks set up: false if it is no target.
-    bool first_contour(Point m, bool same_target, TimePoint deadline);
+    bool first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline);
     bool reacquire_afresh(Point m, double radius, TimePoint deadline);
     void track(TimePoint deadline);
     // A track standing still on something beside the mover: false (see .cpp).
     bool watch_still_track(const GreyImage& frame);
     void remember_contour();
+    // Learns the target's colours from this frame's contour (at `rate`; the first contour replaces
+    // them); false when the frame has no colour, the term is off or the contour is too small.
+    bool learn_colours(float rate);
+    // The rays look with the learned colours on this frame (the likelihood map), or without when
+    // there are none.
+    void look_with_colours();
+    // A new target's first guess of its colours (AppearanceModel::seed), looked with at once.
+    void seed_colours(Point m, double inside_px, double ring_from_px, double ring_to_px);
+    void forget_colours();
     void declare_lost(const char* reason);  // this frame's contour is not the target: lost, for `reason`
 
     const Clock& clock_;
@@ -70,6 +86,10 @@ private:
     ActiveRays rays_;
     PolarPrior prior_;
     TargetModel model_;
+    AppearanceModel appearance_;  // the target's colours against its surroundings (colour sources)
+    LikelihoodMap likelihood_;    // this frame's colours seen through it
+    const GreyImage* frame_ = nullptr;  // the frame being processed, and its colour
+    const Chroma* chroma_ = nullptr;
     Attention attention_;
     Contour contour_;
     std::vector<Point> last_points_;  // the previous contour, for the temporal prior

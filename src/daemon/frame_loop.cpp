@@ -186,7 +186,7 @@ void FrameLoop::track_frame(TimePoint now) {
         if (coasting) tracker_->reacquire_at(*expected);  // look again where the target should be by now
         else tracker_->predict_next(*expected);
     }
-    const FrameResult& result = tracker_->process(frame_.image, deadline);
+    const FrameResult& result = tracker_->process(frame_.image, frame_.chroma, deadline);
     const Contour& contour = tracker_->contour();
     if (result.has_contour && !controller_->consistent(contour.centroid, at_capture)) {
         tracker_->release();  // the contour ran off the target the controller follows: coast instead

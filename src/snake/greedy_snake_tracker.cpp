@@ -126,7 +126,7 @@ void GreedySnakeTracker::track(TimePoint deadline) {
     velocity_ = {velocity_.x + kVelocityRate * (moved.x - velocity_.x), velocity_.y + kVelocityRate * (moved.y - velocity_.y)};
 }
 
-const FrameResult& GreedySnakeTracker::process(const GreyImage& frame, TimePoint deadline) {
+const FrameResult& GreedySnakeTracker::process(const GreyImage& frame, const Chroma&, TimePoint deadline) {
     ++result_.frame;
     result_.lost_reason = nullptr;
     result_.detection = {};

@@ -41,8 +41,10 @@ public:
     void predict_next(Point m) override { external_prediction_ = m; }
     void allow_detection(bool allowed) override { detection_allowed_ = allowed; }
 
-    // Processes one frame; the greedy passes stop before `deadline`. No allocation, no exceptions.
-    const FrameResult& process(const GreyImage& frame, TimePoint deadline) override;
+    // Processes one frame (grey alone: `chroma` is not read); the greedy passes stop before
+    // `deadline`. No allocation, no exceptions.
+    using ContourTracker::process;
+    const FrameResult& process(const GreyImage& frame, const Chroma& chroma, TimePoint deadline) override;
 
     TrackState state() const { return result_.state; }
     const FrameResult& result() const override { return result_; }

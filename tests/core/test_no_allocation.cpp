@@ -73,12 +73,17 @@ TEST_CASE("Tracker::process, set_tunables and a box start allocate nothing while
     rays::Tracker tracker(config, clock);
     const rays::TrackerTunables changed = changed_tunables(config.tunables, config.capacity);
     REQUIRE(changed.rays.count >= config.tunables.rays.centroid_rays);
+    // Grey frames, and the same frames with colour (the colour model's learning and looking).
+    const bool colour = GENERATE(false, true);
+    INFO((colour ? "with colour" : "grey"));
 
-    const rays::test::TrackerAllocationRun run = rays::test::count_tracker_allocations(tracker, "clutter", kFrames, changed);
+    const rays::test::TrackerAllocationRun run =
+        rays::test::count_tracker_allocations(tracker, "clutter", kFrames, changed, colour);
     CHECK(run.tunables_applied);
     CHECK(run.box_tracked);
     CHECK(tracker.tunables().rays.count == changed.rays.count);
     CHECK(run.allocations == 0);
     CHECK(run.tracking >= 100);
+    CHECK(tracker.appearance().valid() == colour);
 #endif
 }

@@ -2,7 +2,8 @@
 // The no-allocation run both contour trackers are held to: a generated scene's frames are rendered
 // first, then the tracker processes them with allocation counting on (thread_allocation_counter.hpp),
 // gets `changed` tunables half-way through and, three quarters through, is released and started in
-// the box round the target.
+// the box round the target. With `colour`, each frame comes with colours drawn from its mask (the
+// target red, the background green), so that the tracker's colour model learns and looks too.
 #pragma once
 #include <string_view>
 
@@ -18,6 +19,6 @@ struct TrackerAllocationRun {
 };
 
 TrackerAllocationRun count_tracker_allocations(ContourTracker& tracker, std::string_view scene, int frames,
-                                               const TrackerTunables& changed);
+                                               const TrackerTunables& changed, bool colour = false);
 
 }  // namespace rays::test

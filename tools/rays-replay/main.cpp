@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
         const auto start = rays::MonoClock::now();
         const auto deadline = options->budget_us > 0 ? start + std::chrono::microseconds(options->budget_us)
                                                      : rays::TimePoint::max();
-        const rays::FrameResult& r = tracker.process(frame, deadline);
+        const rays::FrameResult& r = tracker.process(frame, chroma, deadline);
         const double us = std::chrono::duration<double, std::micro>(rays::MonoClock::now() - start).count();
         times.push_back(us);
         tracking += r.state == rays::TrackState::Tracking;

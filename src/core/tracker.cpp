@@ -198,8 +198,9 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         whole_area_.reset();
         whole_grey_ = 0.0;
     }
-    // A new target's colours come from its first contour, replacing the seed's guess.
-    learn_colours(same_target ? kColourRate : 1.0f);
+    // The first contour is blended into the seed's colours like any tracked frame's: it may have
+    // run out onto background the seed has told apart (the first contour of a new model replaces it).
+    learn_colours(kColourRate);
     model_.learn(contour_, scratch_);
     remember_contour();
     return true;

@@ -28,6 +28,11 @@ constexpr float kColourRate = 0.1f;      // weight of the newest contour in the 
 constexpr double kSeedInside = 0.3;      // of a new target's radius: surely the target round its start point
 constexpr double kSeedRingFrom = 2.0;    // ... and from this many radii ...
 constexpr double kSeedRingTo = 3.0;      // ... to this many, mostly not
+constexpr float kFilterRate = 0.02f;     // weight of the newest frame in the correlation filter (CSRT: 0.02)
+constexpr double kConfidentPsr = 5.0;    // a filter match this clear of its sidelobe says where the target is
+constexpr int kKnownFrames = 10;         // frames a detector's target is followed by its rim before the filter may stand for it
+constexpr double kFilterAgreement = 1.0; // of the target's radius: a contour whose centroid is further from
+                                         // a confident filter match has left the target
 
 }  // namespace
 
@@ -118,6 +123,7 @@ void Tracker::remember_contour() {
         whole_grey_ = whole_grey_ <= 0.0 ? grey : whole_grey_ + whole_area_.rate() * (grey - whole_grey_);
     }
     whole_area_.update(tracked_area_);
+    last_seen_ = contour_.centroid;
     last_count_ = contour_.size;
     for (int i = 0; i < last_count_; ++i) {
         last_points_[i] = contour_.points[i].p;
@@ -151,6 +157,7 @@ bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_targ
     if (!same_target) {
         model_.reset();
         forget_colours();
+        if (from != StartFrom::Prediction) person_start_ = from == StartFrom::Person;  // a re-acquisition keeps it
     }
     prior_.set_circle(std::max(radius, kStartRadiusPx));
     if (from == StartFrom::Detector) m = best_start(m, radius, deadline);
@@ -170,6 +177,7 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     // like the box's inside (PolarPrior::set_box, TargetModel::seed_inside).
     prior_.set_box(box);
     model_.reset();
+    person_start_ = true;
     model_.seed_inside(smoothed_, box);
     // Well inside the box is the target; a ring round the box, from its corners out, is not.
     const double half_diagonal = 0.5 * std::hypot(box.w, box.h);
@@ -192,6 +200,7 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
         reason = attention_.check(contour_, contour_.centroid, limits);
     }
+    if (reason == nullptr && from == StartFrom::Filter && !looks_like_target()) reason = "not as grey as the target";
     if (reason != nullptr) return false;
     if (!same_target) {
         model_.reset();
@@ -201,6 +210,9 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     // The first contour is blended into the seed's colours like any tracked frame's: it may have
     // run out onto background the seed has told apart (the first contour of a new model replaces it).
     learn_colours(kColourRate);
+    // A fresh re-acquisition (reacquire_afresh) keeps the filter until it is known to be the target.
+    if (from != StartFrom::Prediction || same_target) learn_looks(same_target ? kFilterRate : 1.0f, from == StartFrom::Filter);
+    if (!same_target && from != StartFrom::Prediction) rim_frames_ = 0;
     model_.learn(contour_, scratch_);
     remember_contour();
     return true;
@@ -232,6 +244,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
                        contour_.area * kReacquireAreaRatio <= std::max(area, whole.area());
     whole_area_ = whole;  // the same target, if alike
     whole_grey_ = whole_grey;
+    if (alike) learn_looks(kFilterRate, false);
     if (!alike) {  // not the target: as if it had not been tried
         model_ = kept;
         appearance_ = kept_colours;
@@ -241,14 +254,28 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     return alike;
 }
 
+void Tracker::learn_looks(float rate, bool located, const Point* at) {
+    const double diameter = 2.0 * std::sqrt(std::max(contour_.area, 1.0) / std::numbers::pi);
+    const Point centre = at ? *at : contour_.centroid;
+    if (located) filter_.learn_located(smoothed_, *chroma_, centre, diameter, rate);
+    else filter_.learn(smoothed_, *chroma_, centre, diameter, rate);
+}
+
 void Tracker::track(TimePoint deadline) {
     const Point last = contour_.centroid;
-    const Point v = tunables_.predict ? velocity_ : Point{};
+    Point v = tunables_.predict ? velocity_ : Point{};
+    // The correlation filter, where it is sure, says where the target is, edges or not.
+    const Point expected = external_prediction_ ? *external_prediction_ : Point{last.x + v.x, last.y + v.y};
+    match_ = filter_.locate(smoothed_, *chroma_, expected);
+    if (match_.at.x < 0.0 || match_.at.y < 0.0 || match_.at.x > kFrameSize - 1 || match_.at.y > kFrameSize - 1)
+        match_.psr = 0.0;  // a target found off the frame is not found
+    const bool confident = match_.psr >= kConfidentPsr;
+    if (confident) v = {match_.at.x - last.x, match_.at.y - last.y};
     // Constant velocity first; when that contour fails the attention check (the target turned or
     // stopped), the target held still, then reversed — a turn must not cost the track. An outside
     // prediction (predict_next) goes first, with the image's own constant velocity as the fallback.
     Point steps[] = {v, {0.0, 0.0}, {-v.x, -v.y}};
-    int tries = tunables_.predict && std::hypot(v.x, v.y) >= kRetryMinSpeedPx ? 3 : 1;
+    int tries = std::hypot(v.x, v.y) >= kRetryMinSpeedPx ? 3 : 1;
     if (external_prediction_) {
         steps[2] = steps[0];
         steps[0] = {external_prediction_->x - last.x, external_prediction_->y - last.y};
@@ -267,25 +294,101 @@ void Tracker::track(TimePoint deadline) {
         applied = step;
         prior_.set_polygon(last_points_.data(), last_count_, last_open_.data());
         rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
-        reason = attention_.check(contour_, predicted, tunables_.attention);
+        reason = check_contour(predicted, confident);
         if (reason && tunables_.rays.jump_cost > 0.0) {
             // The jumps may have let part of the contour out onto clutter: the smooth contour instead.
             rays_.allow_jumps(false);
             rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
             rays_.allow_jumps(true);
-            reason = attention_.check(contour_, predicted, tunables_.attention);
+            reason = check_contour(predicted, confident);
         }
         if (!reason) break;
+    }
+    // The filter stands for the rim only on a target it knows: one a person pointed at, or one
+    // whose rim it has followed for a while (a detector's start may be on clutter).
+    if (reason && confident && knows_target()) {
+        // The rim is not found (covered, or lost in clutter), but the target's looks are: the last
+        // contour, moved to where the filter found it, stands for it until the rim shows again —
+        // if what it encloses there is about as grey as the target (not background the filter
+        // settled on while the target is gone).
+        coast_to({match_.at.x - last.x - applied.x, match_.at.y - last.y - applied.y});
+        if (looks_like_target()) {
+            follow(last);
+            learn_looks(kFilterRate, true, &match_.at);
+            remember_contour();
+            return;
+        }
     }
     if (reason) {
         declare_lost(reason);
         return;
     }
-    const Point moved{contour_.centroid.x - last.x, contour_.centroid.y - last.y};
-    velocity_ = {velocity_.x + kVelocityRate * (moved.x - velocity_.x), velocity_.y + kVelocityRate * (moved.y - velocity_.y)};
+    follow(last);
+    ++rim_frames_;
     model_.learn(contour_, scratch_);
     learn_colours(kColourRate);
+    learn_looks(kFilterRate, true);
     remember_contour();
+}
+
+void Tracker::coast_to(Point shift) {
+    auto grey = [&](double x, double y) {
+        const double cx = std::clamp(x, 0.0, kFrameSize - 1.001), cy = std::clamp(y, 0.0, kFrameSize - 1.001);
+        const int i = static_cast<int>(cx), j = static_cast<int>(cy);
+        const double fx = cx - i, fy = cy - j;
+        const float* r0 = smoothed_.row(j) + i;
+        const float* r1 = r0 + kFrameSize;
+        return (1.0 - fy) * (r0[0] + fx * (r0[1] - r0[0])) + fy * (r1[0] + fx * (r1[1] - r1[0]));
+    };
+    contour_.size = last_count_;
+    contour_.ref = match_.at;
+    for (int i = 0; i < last_count_; ++i) {
+        ContourPoint& q = contour_.points[i];
+        q = {};
+        q.p = {last_points_[i].x + shift.x, last_points_[i].y + shift.y};
+        q.no_edge = last_open_[i] != 0;
+    }
+    polygon_area_centroid(contour_.points.data(), contour_.size, contour_.area, contour_.centroid);
+    // The grey inside, as the rays see it: on the outer two thirds from the centroid to the rim.
+    const Point c = contour_.centroid;
+    for (int i = 0; i < last_count_; ++i) {
+        ContourPoint& q = contour_.points[i];
+        const double dx = q.p.x - c.x, dy = q.p.y - c.y;
+        q.inside_mean = static_cast<float>((grey(c.x + 0.4 * dx, c.y + 0.4 * dy) + grey(c.x + 0.6 * dx, c.y + 0.6 * dy) +
+                                            grey(c.x + 0.8 * dx, c.y + 0.8 * dy)) / 3.0);
+    }
+}
+
+bool Tracker::looks_like_target() const {
+    if (!model_.valid) return true;
+    float sum = 0.0f;
+    for (float v : model_.inside_mean) sum += v;
+    const double learned = sum / static_cast<float>(TargetModel::kBins);
+    return std::abs(mean_inside_grey(contour_) - learned) <= kReacquireGreyTolerance * std::max<double>(model_.frame_mean, 1.0);
+}
+
+bool Tracker::knows_target() const { return person_start_ || rim_frames_ >= kKnownFrames; }
+
+bool Tracker::look_again(TimePoint deadline) {
+    if (!filter_.valid() || !knows_target()) return false;
+    const FilterMatch match = filter_.locate(smoothed_, *chroma_, last_seen_);
+    if (match.psr < kConfidentPsr) return false;
+    const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
+    return begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
+}
+
+void Tracker::follow(Point last) {
+    const Point moved{contour_.centroid.x - last.x, contour_.centroid.y - last.y};
+    velocity_ = {velocity_.x + kVelocityRate * (moved.x - velocity_.x), velocity_.y + kVelocityRate * (moved.y - velocity_.y)};
+}
+
+const char* Tracker::check_contour(Point predicted, bool confident) {
+    const char* reason = attention_.check(contour_, predicted, tunables_.attention);
+    const double radius = std::sqrt(std::max(tracked_area_, 1.0) / std::numbers::pi);
+    if (!reason && confident &&
+        std::hypot(contour_.centroid.x - match_.at.x, contour_.centroid.y - match_.at.y) > kFilterAgreement * radius)
+        reason = "the contour left the target the correlation filter finds";
+    return reason;
 }
 
 void Tracker::declare_lost(const char* reason) {
@@ -355,8 +458,12 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
 
     if (result_.state == TrackState::Tracking) {
         track(deadline);
-        if (result_.state == TrackState::Tracking && !watch_still_track(frame))
+        // A person's target that the filter still finds is the target, standing still or not.
+        const bool confirmed = person_start_ && match_.psr >= kConfidentPsr;
+        if (result_.state == TrackState::Tracking && !confirmed && !watch_still_track(frame)) {
             declare_lost("the track stood still while motion went on away from it");
+            filter_.reset();  // it learned the looks of something beside the mover: not to be looked for again
+        }
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
         still_frames_ = -1;
@@ -381,6 +488,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
             }
             start_point_.reset();
             start_box_.reset();
+        } else if (look_again(deadline)) {
+            found = true;
         } else if (has_previous_ && detection_allowed_) {
             result_.detection = detector_.detect(previous_, frame, tunables_.detect);
             const Detection& d = result_.detection;

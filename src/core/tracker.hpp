@@ -12,6 +12,7 @@
 #include "core/background_model.hpp"
 #include "core/clock.hpp"
 #include "core/contour_tracker.hpp"
+#include "core/correlation_filter.hpp"
 #include "core/gaussian_smoother.hpp"
 #include "core/motion_detector.hpp"
 
@@ -50,8 +51,9 @@ private:
     Point best_start(Point centre, double radius, TimePoint deadline);
     // Where a new track's start point came from: a person (start_at, start_in) says the target is
     // there, whatever edges it shows; the motion detector's region is searched round for the target;
-    // a prediction (reacquire_at) is where the lost target should be.
-    enum class StartFrom { Person, Detector, Prediction };
+    // a prediction (reacquire_at) is where the lost target should be; the filter (look_again) found
+    // the lost target's looks there.
+    enum class StartFrom { Person, Detector, Prediction, Filter };
     // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks.
     bool begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline);
     // Starts a track in a box: the box's ellipse the first contour's prior, its inside the target's looks.
@@ -59,7 +61,21 @@ private:
     // The new track's first contour from m with the prior and looks set up: false if it is no target.
     bool first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline);
     bool reacquire_afresh(Point m, double radius, TimePoint deadline);
+    // After a loss, the filter looks for the target's looks round where it was last seen: true, and
+    // the track resumes, where it finds them and a contour round them as grey as the target.
+    bool look_again(TimePoint deadline);
+    // Whether the filter knows the target: one a person pointed at, or one whose rim it has followed
+    // for a while (a detector's start may be on clutter).
+    bool knows_target() const;
     void track(TimePoint deadline);
+    // The attention check of this frame's contour, and, where the filter is `confident`, whether the
+    // contour is still where the filter finds the target: nullptr, or why it is not the target.
+    const char* check_contour(Point predicted, bool confident);
+    void follow(Point last);  // the velocity, from the contour's centroid after `last`
+    // This frame's contour: the last one moved by `shift` (to where the filter found the target).
+    void coast_to(Point shift);
+    // Whether this frame's contour encloses about the grey the target model has learned.
+    bool looks_like_target() const;
     // A track standing still on something beside the mover: false (see .cpp).
     bool watch_still_track(const GreyImage& frame);
     void remember_contour();
@@ -72,6 +88,9 @@ private:
     // A new target's first guess of its colours (AppearanceModel::seed), looked with at once.
     void seed_colours(Point m, double inside_px, double ring_from_px, double ring_to_px);
     void forget_colours();
+    // Learns the correlation filter on this frame's contour at `rate` (1: a new target's first),
+    // centred on its centroid or on `at`; `located`: from the window the filter looked in this frame.
+    void learn_looks(float rate, bool located, const Point* at = nullptr);
     void declare_lost(const char* reason);  // this frame's contour is not the target: lost, for `reason`
 
     const Clock& clock_;
@@ -88,6 +107,9 @@ private:
     TargetModel model_;
     AppearanceModel appearance_;  // the target's colours against its surroundings (colour sources)
     LikelihoodMap likelihood_;    // this frame's colours seen through it
+    CorrelationFilter filter_;    // the target's looks, to find it before the rays look for its rim
+    FilterMatch match_;           // where it found the target this frame
+    int rim_frames_ = 0;          // frames of this target whose contour was found by its rim
     const GreyImage* frame_ = nullptr;  // the frame being processed, and its colour
     const Chroma* chroma_ = nullptr;
     Attention attention_;
@@ -96,6 +118,7 @@ private:
     std::vector<unsigned char> last_open_;  // its points without an edge
     std::vector<float> scratch_;
     int last_count_ = 0;
+    Point last_seen_;  // the last contour's centroid
     Point velocity_;
     std::optional<Point> start_point_;
     std::optional<Box> start_box_;  // a box start: start_point_ is its centre
@@ -106,6 +129,7 @@ private:
     int untracked_frames_ = 0;  // frames since the last one with a contour
     int still_frames_ = -1;   // frames the track has stood still near still_at_ (-1: a new track)
     Point still_at_;          // where it stands
+    bool person_start_ = false;  // a person said where the target is (start_at, start_in)
     bool watched_ = true;     // detection started the track, or it has moved since its start point
     int motion_inside_ = 0;   // of this window's still frames, those whose motion was found in the contour
     int motion_outside_ = 0;  // ... and away from it

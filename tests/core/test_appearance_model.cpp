@@ -13,6 +13,7 @@
 #include "core/appearance_model.hpp"
 #include "core/tracker.hpp"
 #include "scenes/scene.hpp"
+#include "support/block_texture.hpp"
 
 namespace {
 
@@ -23,14 +24,8 @@ using rays::GreyImage;
 using rays::LikelihoodMap;
 using rays::Point;
 
-std::uint32_t hash(int x, int y, std::uint32_t seed) {
-    std::uint32_t h = static_cast<std::uint32_t>(x) * 73856093u ^ static_cast<std::uint32_t>(y) * 19349663u ^ seed * 83492791u;
-    h ^= h >> 13;
-    h *= 0x5bd1e995u;
-    return h ^ (h >> 15);
-}
-
-int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+using rays::test::block_hash;
+using rays::test::floor_div;
 
 // Grey in 3-px blocks from 60 to 180 everywhere, target and background alike; the background's
 // colours are greens and blues in 6-px blocks, the target's reds.
@@ -50,7 +45,7 @@ struct ColourScene {
             for (int x = 0; x < rays::kFrameSize; ++x) {
                 const bool on = std::hypot(x - c.x, y - c.y) <= kRadius;
                 const int u = on ? x - target_shift : x - shift;
-                luma.at(x, y) = static_cast<std::uint8_t>(60 + hash(floor_div(u, 3), y / 3, on ? 2u : 1u) % 121);
+                luma.at(x, y) = static_cast<std::uint8_t>(60 + block_hash(floor_div(u, 3), y / 3, on ? 2u : 1u) % 121);
                 mask.at(x, y) = on ? 255 : 0;
             }
         chroma.present = true;
@@ -58,7 +53,7 @@ struct ColourScene {
             for (int i = 0; i < rays::kChromaSize; ++i) {
                 const int x = 2 * i, y = 2 * j;
                 const bool on = std::hypot(x + 0.5 - c.x, y + 0.5 - c.y) <= kRadius;
-                const std::uint32_t h = hash(floor_div(x - shift, 6), y / 6, 3u);
+                const std::uint32_t h = block_hash(floor_div(x - shift, 6), y / 6, 3u);
                 const auto k = static_cast<std::size_t>(j * rays::kChromaSize + i);
                 chroma.u[k] = static_cast<std::uint8_t>(on ? 96 + h % 8 : 136 + h % 40);   // Cb: reds low, greens/blues high
                 chroma.v[k] = static_cast<std::uint8_t>(on ? 184 + h % 8 : 80 + h % 48);   // Cr: reds high

@@ -1,0 +1,263 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "core/correlation_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rays {
+namespace {
+
+constexpr double kMinWindowPx = 24.0;   // a window this small still holds a small target and some ground
+constexpr double kMaxWindowPx = 128.0;  // ... and none larger than the frame
+constexpr double kLabelSigma = 0.1;     // of the target's size in samples: the wanted response's width
+constexpr float kLambda = 0.01f;        // regulariser, per window sample (features have unit spread)
+constexpr int kPeakExclusion = 3;       // samples either side of the peak not counted as its sidelobe
+constexpr float kGreyFloor = 2.0f;      // grey levels: the least spread a window's grey is divided by
+constexpr float kChromaFloor = 4.0f;    // ... and its colour
+
+constexpr int kN = CorrelationFilter::kSize;
+constexpr int kHalf = kN / 2;
+
+float sample(const FloatImage& image, double x, double y) {
+    const double cx = std::clamp(x, 0.0, kFrameSize - 1.001), cy = std::clamp(y, 0.0, kFrameSize - 1.001);
+    const int i = static_cast<int>(cx), j = static_cast<int>(cy);
+    const float fx = static_cast<float>(cx - i), fy = static_cast<float>(cy - j);
+    const float* r0 = image.row(j) + i;
+    const float* r1 = r0 + kFrameSize;
+    const float top = r0[0] + fx * (r0[1] - r0[0]);
+    const float bottom = r1[0] + fx * (r1[1] - r1[0]);
+    return top + fy * (bottom - top);
+}
+
+// Cb and Cr at processing pixel (x, y), bilinear between chroma pixel centres (2i + 0.5, 2j + 0.5).
+void sample_chroma(const Chroma& chroma, double x, double y, float& u, float& v) {
+    const double cu = std::clamp((x - 0.5) * 0.5, 0.0, kChromaSize - 1.001);
+    const double cv = std::clamp((y - 0.5) * 0.5, 0.0, kChromaSize - 1.001);
+    const int i = static_cast<int>(cu), j = static_cast<int>(cv);
+    const float fx = static_cast<float>(cu - i), fy = static_cast<float>(cv - j);
+    const std::size_t a = static_cast<std::size_t>(j * kChromaSize + i), b = a + kChromaSize;
+    auto mix = [&](const std::array<std::uint8_t, kChromaPixels>& p) {
+        const float top = p[a] + fx * (static_cast<float>(p[a + 1]) - p[a]);
+        const float bottom = p[b] + fx * (static_cast<float>(p[b + 1]) - p[b]);
+        return top + fy * (bottom - top);
+    };
+    u = mix(chroma.u);
+    v = mix(chroma.v);
+}
+
+}  // namespace
+
+CorrelationFilter::CorrelationFilter() {
+    fft_.SetFlag(Eigen::FFT<float>::Unscaled);
+    for (int u = 0; u < kN; ++u) hann_[u] = 0.5f * (1.0f - std::cos(2.0f * std::numbers::pi_v<float> * static_cast<float>(u) / kN));
+    // The response wanted for a target at the window's centre: a Gaussian at displacement 0 (the
+    // indices wrap), so that the found peak's index is the target's displacement.
+    const double sigma = kLabelSigma * kN / kPadding;
+    for (int v = 0; v < kN; ++v)
+        for (int u = 0; u < kN; ++u) {
+            const int du = u < kHalf ? u : u - kN, dv = v < kHalf ? v : v - kN;
+            label_[v * kN + u] = static_cast<float>(std::exp(-(du * du + dv * dv) / (2.0 * sigma * sigma)));
+        }
+    fft2(label_, false);  // also makes the FFT's plans, so that nothing is allocated later
+    for (int k = 0; k < kN * kN; ++k) mirror_[k] = ((kN - k / kN) % kN) * kN + (kN - k % kN) % kN;
+    fft2(response_, true);
+}
+
+void CorrelationFilter::fft2(Spectrum& plane, bool inverse) {
+    for (int r = 0; r < kN; ++r) {
+        Complex* row = plane.data() + r * kN;
+        if (inverse) fft_.inv(line_out_.data(), row, kN);
+        else fft_.fwd(line_out_.data(), row, kN);
+        std::copy(line_out_.begin(), line_out_.end(), row);
+    }
+    for (int c = 0; c < kN; ++c) {
+        for (int r = 0; r < kN; ++r) line_[r] = plane[r * kN + c];
+        if (inverse) fft_.inv(line_out_.data(), line_.data(), kN);
+        else fft_.fwd(line_out_.data(), line_.data(), kN);
+        for (int r = 0; r < kN; ++r) plane[r * kN + c] = line_out_[r];
+    }
+}
+
+void CorrelationFilter::transform_window(const FloatImage& image, const Chroma& chroma, Point centre) {
+    window_centre_ = centre;
+    const double step = window_px_ / kN;
+    double sum = 0.0, squares = 0.0;
+    for (int v = 0; v < kN; ++v) {
+        const double y = centre.y + (v - kHalf) * step;
+        for (int u = 0; u < kN; ++u) {
+            const float g = sample(image, centre.x + (u - kHalf) * step, y);
+            grey_[v * kN + u] = g;
+            sum += g;
+            squares += static_cast<double>(g) * g;
+        }
+    }
+    const double count = kN * kN;
+    const float mean = static_cast<float>(sum / count);
+    const float grey_scale = 1.0f / std::max(kGreyFloor, static_cast<float>(std::sqrt(std::max(0.0, squares / count - mean * mean))));
+
+    // Gradient orientations: channel k holds |g|·max(0, cos 2(θ − kπ/K)), from cos 2θ and sin 2θ
+    // without an angle (unsigned orientation: a rim looks the same whichever side is brighter).
+    std::array<float, kOrientations> c2{}, s2{};
+    for (int k = 0; k < kOrientations; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / kOrientations;
+        c2[k] = static_cast<float>(std::cos(a));
+        s2[k] = static_cast<float>(std::sin(a));
+    }
+    double magnitude_sum = 0.0;
+    for (int v = 0; v < kN; ++v)
+        for (int u = 0; u < kN; ++u) {
+            const float gx = grey_[v * kN + std::min(u + 1, kN - 1)] - grey_[v * kN + std::max(u - 1, 0)];
+            const float gy = grey_[std::min(v + 1, kN - 1) * kN + u] - grey_[std::max(v - 1, 0) * kN + u];
+            magnitude_sum += std::sqrt(gx * gx + gy * gy);
+        }
+    const float magnitude_scale = 1.0f / std::max(kGreyFloor, static_cast<float>(magnitude_sum / count));
+
+    float u_mean = 128.0f, v_mean = 128.0f, chroma_scale = 0.0f;
+    const bool colour = chroma.present;
+    if (colour) {
+        double su = 0.0, sv = 0.0, q = 0.0;
+        for (int v = 0; v < kN; v += 2)
+            for (int u = 0; u < kN; u += 2) {
+                float cb, cr;
+                sample_chroma(chroma, centre.x + (u - kHalf) * step, centre.y + (v - kHalf) * step, cb, cr);
+                su += cb;
+                sv += cr;
+                q += static_cast<double>(cb) * cb + static_cast<double>(cr) * cr;
+            }
+        const double n = count / 4.0;
+        u_mean = static_cast<float>(su / n);
+        v_mean = static_cast<float>(sv / n);
+        const double spread = std::sqrt(std::max(0.0, q / n - u_mean * u_mean - v_mean * v_mean));
+        chroma_scale = 1.0f / std::max(kChromaFloor, static_cast<float>(spread));
+    }
+
+    for (int v = 0; v < kN; ++v) {
+        const double y = centre.y + (v - kHalf) * step;
+        for (int u = 0; u < kN; ++u) {
+            const int i = v * kN + u;
+            const float w = hann_[u] * hann_[v];
+            std::array<float, 2 * kPairs> f{};
+            f[0] = (grey_[i] - mean) * grey_scale;
+            const float gx = grey_[v * kN + std::min(u + 1, kN - 1)] - grey_[v * kN + std::max(u - 1, 0)];
+            const float gy = grey_[std::min(v + 1, kN - 1) * kN + u] - grey_[std::max(v - 1, 0) * kN + u];
+            const float magnitude = std::sqrt(gx * gx + gy * gy);
+            if (magnitude > 0.0f) {
+                const float cos2 = (gx * gx - gy * gy) / magnitude, sin2 = 2.0f * gx * gy / magnitude;
+                for (int k = 0; k < kOrientations; ++k)
+                    f[1 + k] = std::max(0.0f, cos2 * c2[k] + sin2 * s2[k]) * magnitude_scale;
+            }
+            if (colour) {
+                float cb, cr;
+                sample_chroma(chroma, centre.x + (u - kHalf) * step, y, cb, cr);
+                f[1 + kOrientations] = (cb - u_mean) * chroma_scale;
+                f[2 + kOrientations] = (cr - v_mean) * chroma_scale;
+            }
+            for (int p = 0; p < kPairs; ++p) spectra_[p][i] = {w * f[2 * p], w * f[2 * p + 1]};
+        }
+    }
+    for (Spectrum& s : spectra_) fft2(s, false);
+}
+
+CorrelationFilter::Complex CorrelationFilter::channel(int c, int k) const {
+    // A real plane's spectrum is conjugate-symmetric, so the pair a + ib unpacks as
+    // A(k) = (Z(k) + conj Z(−k)) / 2 and B(k) = (Z(k) − conj Z(−k)) / 2i.
+    const Spectrum& z = spectra_[c / 2];
+    const Complex a = z[k], b = std::conj(z[mirror_[k]]);
+    if (c % 2 == 0) return 0.5f * (a + b);
+    const Complex d = a - b;
+    return {0.5f * d.imag(), -0.5f * d.real()};
+}
+
+void CorrelationFilter::learn(const FloatImage& image, const Chroma& chroma, Point centre, double target_px,
+                              float rate) {
+    const double wanted = std::clamp(kPadding * target_px, kMinWindowPx, kMaxWindowPx);
+    const bool fresh = !valid_ || rate >= 1.0f;
+    window_px_ = fresh ? wanted : window_px_ + rate * (wanted - window_px_);
+    transform_window(image, chroma, centre);
+    blend(0.0, 0.0, fresh, rate);
+    colour_ = chroma.present;
+    valid_ = true;
+}
+
+void CorrelationFilter::learn_located(const FloatImage& image, const Chroma& chroma, Point centre, double target_px,
+                                      float rate) {
+    const double step = window_px_ / kN;
+    const double du = (centre.x - window_centre_.x) / step, dv = (centre.y - window_centre_.y) / step;
+    if (!valid_ || rate >= 1.0f || std::abs(du) > kN / 4 || std::abs(dv) > kN / 4) {
+        learn(image, chroma, centre, target_px, rate);
+        return;
+    }
+    blend(du, dv, false, rate);
+    const double wanted = std::clamp(kPadding * target_px, kMinWindowPx, kMaxWindowPx);
+    window_px_ += rate * (wanted - window_px_);  // from the next frame on
+}
+
+void CorrelationFilter::blend(double du, double dv, bool fresh, float rate) {
+    // The wanted response moved by (du, dv) samples: G(k)·exp(−2πi k·d / N), one ramp per axis.
+    for (int k = 0; k < kN; ++k) {
+        const int f = k < kHalf ? k : k - kN;  // the signed frequency, so that the ramp is smooth
+        ramp_u_[k] = std::polar(1.0f, static_cast<float>(-2.0 * std::numbers::pi * f * du / kN));
+        ramp_v_[k] = std::polar(1.0f, static_cast<float>(-2.0 * std::numbers::pi * f * dv / kN));
+    }
+    // The multi-channel closed form (DSST eq. 5): A_l = G·conj(F_l), B = Σ_l |F_l|², each a running
+    // mean over frames at `rate` (MOSSE's update).
+    for (int k = 0; k < kN * kN; ++k) {
+        const Complex g = label_[k] * ramp_u_[k % kN] * ramp_v_[k / kN];
+        float energy = 0.0f;
+        for (int c = 0; c < kChannels; ++c) {
+            const Complex f = channel(c, k);
+            const Complex a = g * std::conj(f);
+            numerator_[c][k] = fresh ? a : numerator_[c][k] + rate * (a - numerator_[c][k]);
+            energy += std::norm(f);
+        }
+        denominator_[k] = fresh ? energy : denominator_[k] + rate * (energy - denominator_[k]);
+    }
+}
+
+FilterMatch CorrelationFilter::locate(const FloatImage& image, const Chroma& chroma, Point around) {
+    if (!valid_) return {around, 0.0};
+    transform_window(image, chroma, around);
+    // y = F⁻¹{ Σ_l conj(A_l) Z_l / (B + λ) } (DSST eq. 6), with A_l stored conjugated already.
+    const float lambda = kLambda * kN * kN;
+    const int channels = colour_ && chroma.present ? kChannels : 1 + kOrientations;
+    for (int k = 0; k < kN * kN; ++k) {
+        Complex sum{};
+        for (int c = 0; c < channels; ++c) sum += numerator_[c][k] * channel(c, k);
+        response_[k] = sum / (denominator_[k] + lambda);
+    }
+    fft2(response_, true);
+
+    int peak = 0;
+    for (int k = 1; k < kN * kN; ++k)
+        if (response_[k].real() > response_[peak].real()) peak = k;
+    const int pu = peak % kN, pv = peak / kN;
+    // The sidelobe: everything but a small square round the peak (MOSSE's PSR).
+    double sum = 0.0, squares = 0.0;
+    int n = 0;
+    for (int v = 0; v < kN; ++v)
+        for (int u = 0; u < kN; ++u) {
+            const int du = std::abs((u - pu + kN + kHalf) % kN - kHalf), dv = std::abs((v - pv + kN + kHalf) % kN - kHalf);
+            if (du <= kPeakExclusion && dv <= kPeakExclusion) continue;
+            const double r = response_[v * kN + u].real();
+            sum += r;
+            squares += r * r;
+            ++n;
+        }
+    const double mean = sum / n;
+    const double spread = std::sqrt(std::max(0.0, squares / n - mean * mean));
+    const double top = response_[peak].real();
+    // Sub-sample peak: a parabola through the peak and its neighbours on each axis (indices wrap).
+    auto offset = [&](int before, int after) {
+        const double l = response_[before].real(), r = response_[after].real();
+        const double curvature = l - 2.0 * top + r;
+        return curvature < 0.0 ? std::clamp(0.5 * (l - r) / curvature, -0.5, 0.5) : 0.0;
+    };
+    const double ou = offset(pv * kN + (pu + kN - 1) % kN, pv * kN + (pu + 1) % kN);
+    const double ov = offset(((pv + kN - 1) % kN) * kN + pu, ((pv + 1) % kN) * kN + pu);
+    const double du = (pu < kHalf ? pu : pu - kN) + ou, dv = (pv < kHalf ? pv : pv - kN) + ov;
+    const double step = window_px_ / kN;
+    return {{around.x + du * step, around.y + dv * step}, spread > 0.0 ? (top - mean) / spread : 0.0};
+}
+
+}  // namespace rays

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+// Finds the target by what it looks like, not by its edges: a multi-channel discriminative
+// correlation filter (MOSSE, Bolme et al., CVPR 2010, with the multi-channel closed form of DSST,
+// Danelljan et al., BMVC 2014) over a square window round the target, learned where the contour is.
+// Features per window sample: grey, unsigned gradient orientations (HOG-like, soft-binned without
+// cells) and, where the source has colour, Cb and Cr. The window's side follows the contour's size,
+// so the filter is learned and applied at the target's scale. The response's peak-to-sidelobe ratio
+// is the match's confidence. Fixed memory; the FFT plans are made at construction, so locate() and
+// learn() allocate nothing.
+#pragma once
+#include <array>
+#include <complex>
+#include <unsupported/Eigen/FFT>
+
+#include "core/image.hpp"
+
+namespace rays {
+
+struct FilterMatch {
+    Point at;          // where the window's target centre is found, processing pixels
+    double psr = 0.0;  // peak-to-sidelobe ratio of the response (0: no filter yet)
+};
+
+class CorrelationFilter {
+public:
+    static constexpr int kSize = 32;  // window samples per side (a power of two: radix-2/4 FFTs)
+    static constexpr int kOrientations = 6;
+    static constexpr int kChannels = 1 + kOrientations + 2;  // grey, orientations, Cb, Cr
+    static constexpr int kPairs = (kChannels + 1) / 2;       // two real channels per complex FFT
+    static constexpr double kPadding = 2.5;  // window side / target size (target and its surroundings)
+
+    CorrelationFilter();
+
+    void reset() { valid_ = false; }
+    bool valid() const { return valid_; }
+    double window_px() const { return window_px_; }
+
+    // Learns the target centred at `centre` whose size (its equivalent diameter) is `target_px`,
+    // blended in at `rate` (a new filter after reset() replaces it). The window's side follows the
+    // size at the same rate.
+    void learn(const FloatImage& image, const Chroma& chroma, Point centre, double target_px, float rate);
+    // The same on the frame locate() last looked at, from the window it transformed there (no
+    // transform of its own: the wanted response is moved to where the target is in that window).
+    // A target beyond a quarter of the window from its centre is learned from a window of its own.
+    void learn_located(const FloatImage& image, const Chroma& chroma, Point centre, double target_px, float rate);
+
+    // The response over a window centred at `around`: where its peak is, and how sure.
+    FilterMatch locate(const FloatImage& image, const Chroma& chroma, Point around);
+
+private:
+    using Complex = std::complex<float>;
+    using Spectrum = std::array<Complex, kSize * kSize>;
+
+    // The window's features at `centre`, each pair of channels packed as one complex plane and
+    // transformed: spectra_[p] holds channels 2p (real) and 2p + 1 (imaginary).
+    void transform_window(const FloatImage& image, const Chroma& chroma, Point centre);
+    // Channel c's spectrum at frequency index k, unpacked from the transformed pair.
+    Complex channel(int c, int k) const;
+    // Blends the transformed window into the filter with the wanted response G·ramp (the label
+    // moved by the target's displacement in the window).
+    void blend(double du, double dv, bool fresh, float rate);
+    void fft2(Spectrum& plane, bool inverse);
+
+    Eigen::FFT<float> fft_;
+    std::array<Spectrum, kPairs> spectra_{};
+    std::array<Spectrum, kChannels> numerator_{};  // A_l = G · conj(F_l), learned
+    std::array<float, kSize * kSize> denominator_{};  // B = Σ_l |F_l|², learned
+    Spectrum label_{};     // G: the Gaussian the response should be, peaked at displacement 0
+    Spectrum response_{};
+    std::array<Complex, kSize> line_{}, line_out_{};
+    std::array<float, kSize> hann_{};
+    std::array<float, kSize * kSize> grey_{};  // the window's samples, before the features
+    std::array<Complex, kSize> ramp_u_{}, ramp_v_{};
+    std::array<int, kSize * kSize> mirror_{};  // index of −k for each frequency index k
+    Point window_centre_;  // where the last transformed window was centred
+    bool colour_ = false;  // the filter was learned with chroma channels
+    bool valid_ = false;
+    double window_px_ = 0.0;
+};
+
+}  // namespace rays

@@ -19,17 +19,6 @@ constexpr float kChromaFloor = 4.0f;    // ... and its colour
 constexpr int kN = CorrelationFilter::kSize;
 constexpr int kHalf = kN / 2;
 
-float sample(const FloatImage& image, double x, double y) {
-    const double cx = std::clamp(x, 0.0, kFrameSize - 1.001), cy = std::clamp(y, 0.0, kFrameSize - 1.001);
-    const int i = static_cast<int>(cx), j = static_cast<int>(cy);
-    const float fx = static_cast<float>(cx - i), fy = static_cast<float>(cy - j);
-    const float* r0 = image.row(j) + i;
-    const float* r1 = r0 + kFrameSize;
-    const float top = r0[0] + fx * (r0[1] - r0[0]);
-    const float bottom = r1[0] + fx * (r1[1] - r1[0]);
-    return top + fy * (bottom - top);
-}
-
 // Cb and Cr at processing pixel (x, y), bilinear between chroma pixel centres (2i + 0.5, 2j + 0.5).
 void sample_chroma(const Chroma& chroma, double x, double y, float& u, float& v) {
     const double cu = std::clamp((x - 0.5) * 0.5, 0.0, kChromaSize - 1.001);
@@ -51,42 +40,74 @@ void sample_chroma(const Chroma& chroma, double x, double y, float& u, float& v)
 CorrelationFilter::CorrelationFilter() {
     fft_.SetFlag(Eigen::FFT<float>::Unscaled);
     for (int u = 0; u < kN; ++u) hann_[u] = 0.5f * (1.0f - std::cos(2.0f * std::numbers::pi_v<float> * static_cast<float>(u) / kN));
+    for (int k = 0; k < kOrientations; ++k) {
+        const double a = 2.0 * std::numbers::pi * k / kOrientations;
+        cos2_[k] = static_cast<float>(std::cos(a));
+        sin2_[k] = static_cast<float>(std::sin(a));
+    }
     // The response wanted for a target at the window's centre: a Gaussian at displacement 0 (the
     // indices wrap), so that the found peak's index is the target's displacement.
     const double sigma = kLabelSigma * kN / kPadding;
+    Spectrum& label = pairs_[0];
     for (int v = 0; v < kN; ++v)
         for (int u = 0; u < kN; ++u) {
             const int du = u < kHalf ? u : u - kN, dv = v < kHalf ? v : v - kN;
-            label_[v * kN + u] = static_cast<float>(std::exp(-(du * du + dv * dv) / (2.0 * sigma * sigma)));
+            label[v * kN + u] = static_cast<float>(std::exp(-(du * du + dv * dv) / (2.0 * sigma * sigma)));
         }
-    fft2(label_, false);  // also makes the FFT's plans, so that nothing is allocated later
-    for (int k = 0; k < kN * kN; ++k) mirror_[k] = ((kN - k / kN) % kN) * kN + (kN - k % kN) % kN;
-    fft2(response_, true);
+    fft2(label);  // also makes the FFT's plans, so that nothing is allocated later
+    for (int v = 0; v < kN; ++v)
+        for (int u = 0; u < kHalfColumns; ++u) label_[v * kHalfColumns + u] = label[v * kN + u];
+    HalfSpectrum scratch = label_;
+    inverse_real(scratch, response_);  // ... the inverse's plans too
 }
 
-void CorrelationFilter::fft2(Spectrum& plane, bool inverse) {
+void CorrelationFilter::fft2(Spectrum& plane) {
     for (int r = 0; r < kN; ++r) {
         Complex* row = plane.data() + r * kN;
-        if (inverse) fft_.inv(line_out_.data(), row, kN);
-        else fft_.fwd(line_out_.data(), row, kN);
+        fft_.fwd(line_out_.data(), row, kN);
         std::copy(line_out_.begin(), line_out_.end(), row);
     }
     for (int c = 0; c < kN; ++c) {
         for (int r = 0; r < kN; ++r) line_[r] = plane[r * kN + c];
-        if (inverse) fft_.inv(line_out_.data(), line_.data(), kN);
-        else fft_.fwd(line_out_.data(), line_.data(), kN);
+        fft_.fwd(line_out_.data(), line_.data(), kN);
         for (int r = 0; r < kN; ++r) plane[r * kN + c] = line_out_[r];
     }
 }
 
-void CorrelationFilter::transform_window(const FloatImage& image, const Chroma& chroma, Point centre) {
-    window_centre_ = centre;
+void CorrelationFilter::inverse_real(HalfSpectrum& half, Plane& out) {
+    for (int u = 0; u < kHalfColumns; ++u) {
+        for (int v = 0; v < kN; ++v) line_[v] = half[v * kHalfColumns + u];
+        fft_.inv(line_out_.data(), line_.data(), kN);
+        for (int v = 0; v < kN; ++v) half[v * kHalfColumns + u] = line_out_[v];
+    }
+    // Each row is now the half spectrum of a real line, X(N − u) = conj X(u). Two rows a and b go
+    // through one complex inverse as X_a + i·X_b: the real part comes out as a, the imaginary as b.
+    // The lone frequencies u = 0 and N/2 of a real line are real: their imaginary parts are dropped.
+    constexpr Complex i{0.0f, 1.0f};
+    for (int y = 0; y < kN; y += 2) {
+        const Complex* a = half.data() + y * kHalfColumns;
+        const Complex* b = a + kHalfColumns;
+        line_[0] = {a[0].real(), b[0].real()};
+        line_[kHalf] = {a[kHalf].real(), b[kHalf].real()};
+        for (int u = 1; u < kHalf; ++u) {
+            line_[u] = a[u] + i * b[u];
+            line_[kN - u] = std::conj(a[u]) + i * std::conj(b[u]);
+        }
+        fft_.inv(line_out_.data(), line_.data(), kN);
+        for (int x = 0; x < kN; ++x) {
+            out[y * kN + x] = line_out_[x].real();
+            out[(y + 1) * kN + x] = line_out_[x].imag();
+        }
+    }
+}
+
+void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma, Point centre, int pairs) {
     const double step = window_px_ / kN;
     double sum = 0.0, squares = 0.0;
     for (int v = 0; v < kN; ++v) {
         const double y = centre.y + (v - kHalf) * step;
         for (int u = 0; u < kN; ++u) {
-            const float g = sample(image, centre.x + (u - kHalf) * step, y);
+            const float g = sample_bilinear(image, centre.x + (u - kHalf) * step, y);
             grey_[v * kN + u] = g;
             sum += g;
             squares += static_cast<double>(g) * g;
@@ -96,20 +117,14 @@ void CorrelationFilter::transform_window(const FloatImage& image, const Chroma& 
     const float mean = static_cast<float>(sum / count);
     const float grey_scale = 1.0f / std::max(kGreyFloor, static_cast<float>(std::sqrt(std::max(0.0, squares / count - mean * mean))));
 
-    // Gradient orientations: channel k holds |g|·max(0, cos 2(θ − kπ/K)), from cos 2θ and sin 2θ
-    // without an angle (unsigned orientation: a rim looks the same whichever side is brighter).
-    std::array<float, kOrientations> c2{}, s2{};
-    for (int k = 0; k < kOrientations; ++k) {
-        const double a = 2.0 * std::numbers::pi * k / kOrientations;
-        c2[k] = static_cast<float>(std::cos(a));
-        s2[k] = static_cast<float>(std::sin(a));
-    }
     double magnitude_sum = 0.0;
     for (int v = 0; v < kN; ++v)
         for (int u = 0; u < kN; ++u) {
-            const float gx = grey_[v * kN + std::min(u + 1, kN - 1)] - grey_[v * kN + std::max(u - 1, 0)];
-            const float gy = grey_[std::min(v + 1, kN - 1) * kN + u] - grey_[std::max(v - 1, 0) * kN + u];
-            magnitude_sum += std::sqrt(gx * gx + gy * gy);
+            const int i = v * kN + u;
+            gx_[i] = grey_[v * kN + std::min(u + 1, kN - 1)] - grey_[v * kN + std::max(u - 1, 0)];
+            gy_[i] = grey_[std::min(v + 1, kN - 1) * kN + u] - grey_[std::max(v - 1, 0) * kN + u];
+            magnitude_[i] = std::sqrt(gx_[i] * gx_[i] + gy_[i] * gy_[i]);
+            magnitude_sum += magnitude_[i];
         }
     const float magnitude_scale = 1.0f / std::max(kGreyFloor, static_cast<float>(magnitude_sum / count));
 
@@ -139,13 +154,12 @@ void CorrelationFilter::transform_window(const FloatImage& image, const Chroma& 
             const float w = hann_[u] * hann_[v];
             std::array<float, 2 * kPairs> f{};
             f[0] = (grey_[i] - mean) * grey_scale;
-            const float gx = grey_[v * kN + std::min(u + 1, kN - 1)] - grey_[v * kN + std::max(u - 1, 0)];
-            const float gy = grey_[std::min(v + 1, kN - 1) * kN + u] - grey_[std::max(v - 1, 0) * kN + u];
-            const float magnitude = std::sqrt(gx * gx + gy * gy);
-            if (magnitude > 0.0f) {
-                const float cos2 = (gx * gx - gy * gy) / magnitude, sin2 = 2.0f * gx * gy / magnitude;
+            // Gradient orientations: channel k holds |g|·max(0, cos 2(θ − kπ/K)), from cos 2θ and
+            // sin 2θ without an angle (unsigned orientation: a rim looks the same whichever side is brighter).
+            if (magnitude_[i] > 0.0f) {
+                const float cos2 = (gx_[i] * gx_[i] - gy_[i] * gy_[i]) / magnitude_[i], sin2 = 2.0f * gx_[i] * gy_[i] / magnitude_[i];
                 for (int k = 0; k < kOrientations; ++k)
-                    f[1 + k] = std::max(0.0f, cos2 * c2[k] + sin2 * s2[k]) * magnitude_scale;
+                    f[1 + k] = std::max(0.0f, cos2 * cos2_[k] + sin2 * sin2_[k]) * magnitude_scale;
             }
             if (colour) {
                 float cb, cr;
@@ -153,20 +167,42 @@ void CorrelationFilter::transform_window(const FloatImage& image, const Chroma& 
                 f[1 + kOrientations] = (cb - u_mean) * chroma_scale;
                 f[2 + kOrientations] = (cr - v_mean) * chroma_scale;
             }
-            for (int p = 0; p < kPairs; ++p) spectra_[p][i] = {w * f[2 * p], w * f[2 * p + 1]};
+            for (int p = 0; p < pairs; ++p) pairs_[p][i] = {w * f[2 * p], w * f[2 * p + 1]};
         }
     }
-    for (Spectrum& s : spectra_) fft2(s, false);
 }
 
-CorrelationFilter::Complex CorrelationFilter::channel(int c, int k) const {
+void CorrelationFilter::transform_window(const FloatImage& image, const Chroma& chroma, Point centre) {
+    window_centre_ = centre;
+    const int channels = chroma.present ? kChannels : 1 + kOrientations;
+    const int pairs = (channels + 1) / 2;
+    fill_pairs(image, chroma, centre, pairs);
+    for (int p = 0; p < pairs; ++p) fft2(pairs_[p]);
     // A real plane's spectrum is conjugate-symmetric, so the pair a + ib unpacks as
     // A(k) = (Z(k) + conj Z(−k)) / 2 and B(k) = (Z(k) − conj Z(−k)) / 2i.
-    const Spectrum& z = spectra_[c / 2];
-    const Complex a = z[k], b = std::conj(z[mirror_[k]]);
-    if (c % 2 == 0) return 0.5f * (a + b);
-    const Complex d = a - b;
-    return {0.5f * d.imag(), -0.5f * d.real()};
+    for (int p = 0; p < pairs; ++p) {
+        const Spectrum& z = pairs_[p];
+        HalfSpectrum& a = features_[2 * p];
+        HalfSpectrum& b = features_[std::min(2 * p + 1, kChannels - 1)];  // a lone last channel: b unused
+        const bool lone = 2 * p + 1 >= channels;
+        for (int v = 0; v < kN; ++v) {
+            const Complex* row = z.data() + v * kN;
+            const Complex* mirror_row = z.data() + ((kN - v) % kN) * kN;
+            for (int u = 0; u < kHalfColumns; ++u) {
+                const Complex zk = row[u], zm = std::conj(mirror_row[(kN - u) % kN]);
+                const int h = v * kHalfColumns + u;
+                a[h] = 0.5f * (zk + zm);
+                if (!lone) {
+                    const Complex d = zk - zm;
+                    b[h] = {0.5f * d.imag(), -0.5f * d.real()};
+                }
+            }
+        }
+    }
+    if (!chroma.present) {  // no colour: the chroma channels say nothing
+        features_[1 + kOrientations].fill({});
+        features_[2 + kOrientations].fill({});
+    }
 }
 
 void CorrelationFilter::learn(const FloatImage& image, const Chroma& chroma, Point centre, double target_px,
@@ -202,17 +238,19 @@ void CorrelationFilter::blend(double du, double dv, bool fresh, float rate) {
     }
     // The multi-channel closed form (DSST eq. 5): A_l = G·conj(F_l), B = Σ_l |F_l|², each a running
     // mean over frames at `rate` (MOSSE's update).
-    for (int k = 0; k < kN * kN; ++k) {
-        const Complex g = label_[k] * ramp_u_[k % kN] * ramp_v_[k / kN];
-        float energy = 0.0f;
-        for (int c = 0; c < kChannels; ++c) {
-            const Complex f = channel(c, k);
-            const Complex a = g * std::conj(f);
-            numerator_[c][k] = fresh ? a : numerator_[c][k] + rate * (a - numerator_[c][k]);
-            energy += std::norm(f);
+    const float keep = fresh ? 0.0f : 1.0f - rate, take = fresh ? 1.0f : rate;
+    for (int v = 0; v < kN; ++v)
+        for (int u = 0; u < kHalfColumns; ++u) {
+            const int h = v * kHalfColumns + u;
+            const Complex g = label_[h] * ramp_u_[u] * ramp_v_[v];
+            float energy = 0.0f;
+            for (int c = 0; c < kChannels; ++c) {
+                const Complex f = features_[c][h];
+                numerator_[c][h] = keep * numerator_[c][h] + take * (g * std::conj(f));
+                energy += std::norm(f);
+            }
+            denominator_[h] = keep * denominator_[h] + take * energy;
         }
-        denominator_[k] = fresh ? energy : denominator_[k] + rate * (energy - denominator_[k]);
-    }
 }
 
 FilterMatch CorrelationFilter::locate(const FloatImage& image, const Chroma& chroma, Point around) {
@@ -221,16 +259,15 @@ FilterMatch CorrelationFilter::locate(const FloatImage& image, const Chroma& chr
     // y = F⁻¹{ Σ_l conj(A_l) Z_l / (B + λ) } (DSST eq. 6), with A_l stored conjugated already.
     const float lambda = kLambda * kN * kN;
     const int channels = colour_ && chroma.present ? kChannels : 1 + kOrientations;
-    for (int k = 0; k < kN * kN; ++k) {
-        Complex sum{};
-        for (int c = 0; c < channels; ++c) sum += numerator_[c][k] * channel(c, k);
-        response_[k] = sum / (denominator_[k] + lambda);
-    }
-    fft2(response_, true);
+    for (int h = 0; h < kN * kHalfColumns; ++h) response_spectrum_[h] = numerator_[0][h] * features_[0][h];
+    for (int c = 1; c < channels; ++c)
+        for (int h = 0; h < kN * kHalfColumns; ++h) response_spectrum_[h] += numerator_[c][h] * features_[c][h];
+    for (int h = 0; h < kN * kHalfColumns; ++h) response_spectrum_[h] /= denominator_[h] + lambda;
+    inverse_real(response_spectrum_, response_);
 
     int peak = 0;
     for (int k = 1; k < kN * kN; ++k)
-        if (response_[k].real() > response_[peak].real()) peak = k;
+        if (response_[k] > response_[peak]) peak = k;
     const int pu = peak % kN, pv = peak / kN;
     // The sidelobe: everything but a small square round the peak (MOSSE's PSR).
     double sum = 0.0, squares = 0.0;
@@ -239,17 +276,17 @@ FilterMatch CorrelationFilter::locate(const FloatImage& image, const Chroma& chr
         for (int u = 0; u < kN; ++u) {
             const int du = std::abs((u - pu + kN + kHalf) % kN - kHalf), dv = std::abs((v - pv + kN + kHalf) % kN - kHalf);
             if (du <= kPeakExclusion && dv <= kPeakExclusion) continue;
-            const double r = response_[v * kN + u].real();
+            const double r = response_[v * kN + u];
             sum += r;
             squares += r * r;
             ++n;
         }
     const double mean = sum / n;
     const double spread = std::sqrt(std::max(0.0, squares / n - mean * mean));
-    const double top = response_[peak].real();
+    const double top = response_[peak];
     // Sub-sample peak: a parabola through the peak and its neighbours on each axis (indices wrap).
     auto offset = [&](int before, int after) {
-        const double l = response_[before].real(), r = response_[after].real();
+        const double l = response_[before], r = response_[after];
         const double curvature = l - 2.0 * top + r;
         return curvature < 0.0 ? std::clamp(0.5 * (l - r) / curvature, -0.5, 0.5) : 0.0;
     };

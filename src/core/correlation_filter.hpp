@@ -49,29 +49,36 @@ public:
 
 private:
     using Complex = std::complex<float>;
+    static constexpr int kHalfColumns = kSize / 2 + 1;  // u = 0 … N/2: real features mirror the rest
     using Spectrum = std::array<Complex, kSize * kSize>;
+    using HalfSpectrum = std::array<Complex, kSize * kHalfColumns>;  // row v, column u ≤ N/2
+    using Plane = std::array<float, kSize * kSize>;
 
-    // The window's features at `centre`, each pair of channels packed as one complex plane and
-    // transformed: spectra_[p] holds channels 2p (real) and 2p + 1 (imaginary).
+    // The window's features at `centre`, transformed: features_[c] is channel c's half spectrum.
     void transform_window(const FloatImage& image, const Chroma& chroma, Point centre);
-    // Channel c's spectrum at frequency index k, unpacked from the transformed pair.
-    Complex channel(int c, int k) const;
+    // The window's samples and, per sample, the channels' values, each pair of channels packed as one
+    // complex plane: pairs_[p] holds channels 2p (real) and 2p + 1 (imaginary).
+    void fill_pairs(const FloatImage& image, const Chroma& chroma, Point centre, int pairs);
     // Blends the transformed window into the filter with the wanted response G·ramp (the label
     // moved by the target's displacement in the window).
     void blend(double du, double dv, bool fresh, float rate);
-    void fft2(Spectrum& plane, bool inverse);
+    void fft2(Spectrum& plane);
+    // The real plane whose half spectrum is `half` (unscaled inverse; `half` is overwritten).
+    void inverse_real(HalfSpectrum& half, Plane& out);
 
     Eigen::FFT<float> fft_;
-    std::array<Spectrum, kPairs> spectra_{};
-    std::array<Spectrum, kChannels> numerator_{};  // A_l = G · conj(F_l), learned
-    std::array<float, kSize * kSize> denominator_{};  // B = Σ_l |F_l|², learned
-    Spectrum label_{};     // G: the Gaussian the response should be, peaked at displacement 0
-    Spectrum response_{};
+    std::array<Spectrum, kPairs> pairs_{};
+    std::array<HalfSpectrum, kChannels> features_{};
+    std::array<HalfSpectrum, kChannels> numerator_{};  // A_l = G · conj(F_l), learned
+    std::array<float, kSize * kHalfColumns> denominator_{};  // B = Σ_l |F_l|², learned
+    HalfSpectrum label_{};  // G: the Gaussian the response should be, peaked at displacement 0
+    HalfSpectrum response_spectrum_{};
+    Plane response_{};
     std::array<Complex, kSize> line_{}, line_out_{};
     std::array<float, kSize> hann_{};
-    std::array<float, kSize * kSize> grey_{};  // the window's samples, before the features
+    std::array<float, kOrientations> cos2_{}, sin2_{};  // cos 2θ_k and sin 2θ_k of each orientation bin
+    Plane grey_{}, gx_{}, gy_{}, magnitude_{};  // the window's samples and their gradient
     std::array<Complex, kSize> ramp_u_{}, ramp_v_{};
-    std::array<int, kSize * kSize> mirror_{};  // index of −k for each frequency index k
     Point window_centre_;  // where the last transformed window was centred
     bool colour_ = false;  // the filter was learned with chroma channels
     bool valid_ = false;

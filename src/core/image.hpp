@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The fixed 128×128 processing frame. x right, y down, pixel centres at integer coordinates.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -21,6 +22,18 @@ struct Plane {
 
 using GreyImage = Plane<std::uint8_t>;   // what a frame source delivers
 using FloatImage = Plane<float>;         // the smoothed image the rays sample
+
+// The image at (x, y), bilinear between pixel centres; a point off the image reads its border.
+inline float sample_bilinear(const FloatImage& image, double x, double y) {
+    const double cx = std::clamp(x, 0.0, kFrameSize - 1.001), cy = std::clamp(y, 0.0, kFrameSize - 1.001);
+    const int i = static_cast<int>(cx), j = static_cast<int>(cy);
+    const float fx = static_cast<float>(cx - i), fy = static_cast<float>(cy - j);
+    const float* r0 = image.row(j) + i;
+    const float* r1 = r0 + kFrameSize;
+    const float top = r0[0] + fx * (r0[1] - r0[0]);
+    const float bottom = r1[0] + fx * (r1[1] - r1[0]);
+    return top + fy * (bottom - top);
+}
 
 // The frame's colour beside its luma, where the source has colour: Cb (u) and Cr (v), full-range
 // BT.601 as in JPEG (128 = no colour), each 64×64, chroma pixel (i, j) covering processing pixels

@@ -332,14 +332,6 @@ void Tracker::track(TimePoint deadline) {
 }
 
 void Tracker::coast_to(Point shift) {
-    auto grey = [&](double x, double y) {
-        const double cx = std::clamp(x, 0.0, kFrameSize - 1.001), cy = std::clamp(y, 0.0, kFrameSize - 1.001);
-        const int i = static_cast<int>(cx), j = static_cast<int>(cy);
-        const double fx = cx - i, fy = cy - j;
-        const float* r0 = smoothed_.row(j) + i;
-        const float* r1 = r0 + kFrameSize;
-        return (1.0 - fy) * (r0[0] + fx * (r0[1] - r0[0])) + fy * (r1[0] + fx * (r1[1] - r1[0]));
-    };
     contour_.size = last_count_;
     contour_.ref = match_.at;
     for (int i = 0; i < last_count_; ++i) {
@@ -354,8 +346,9 @@ void Tracker::coast_to(Point shift) {
     for (int i = 0; i < last_count_; ++i) {
         ContourPoint& q = contour_.points[i];
         const double dx = q.p.x - c.x, dy = q.p.y - c.y;
-        q.inside_mean = static_cast<float>((grey(c.x + 0.4 * dx, c.y + 0.4 * dy) + grey(c.x + 0.6 * dx, c.y + 0.6 * dy) +
-                                            grey(c.x + 0.8 * dx, c.y + 0.8 * dy)) / 3.0);
+        q.inside_mean = (sample_bilinear(smoothed_, c.x + 0.4 * dx, c.y + 0.4 * dy) +
+                         sample_bilinear(smoothed_, c.x + 0.6 * dx, c.y + 0.6 * dy) +
+                         sample_bilinear(smoothed_, c.x + 0.8 * dx, c.y + 0.8 * dy)) / 3.0f;
     }
 }
 

@@ -30,6 +30,11 @@ constexpr double kSeedRingFrom = 2.0;    // ... and from this many radii ...
 constexpr double kSeedRingTo = 3.0;      // ... to this many, mostly not
 constexpr float kFilterRate = 0.02f;     // weight of the newest frame in the correlation filter (CSRT: 0.02)
 constexpr double kConfidentPsr = 5.0;    // a filter match this clear of its sidelobe says where the target is
+constexpr int kSearchWindows = 4;       // windows of the whole-frame search per frame (each a filter locate)
+constexpr double kRedetectShare = 0.5;  // of the target's mean PSR while tracked: what a match found
+                                        // elsewhere in the frame must reach (a textured background
+                                        // gives 5–8 here and there; real targets 9–48, median)
+constexpr double kPsrRate = 0.1;        // weight of the newest frame in that mean
 constexpr int kKnownFrames = 10;         // frames a detector's target is followed by its rim before the filter may stand for it
 constexpr double kFilterAgreement = 1.0; // of the target's radius: a contour whose centroid is further from
                                          // a confident filter match has left the target
@@ -212,7 +217,10 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     learn_colours(kColourRate);
     // A fresh re-acquisition (reacquire_afresh) keeps the filter until it is known to be the target.
     if (from != StartFrom::Prediction || same_target) learn_looks(same_target ? kFilterRate : 1.0f, from == StartFrom::Filter);
-    if (!same_target && from != StartFrom::Prediction) rim_frames_ = 0;
+    if (!same_target && from != StartFrom::Prediction) {
+        rim_frames_ = 0;
+        psr_tracked_ = 0.0;
+    }
     model_.learn(contour_, scratch_);
     remember_contour();
     return true;
@@ -325,6 +333,7 @@ void Tracker::track(TimePoint deadline) {
     }
     follow(last);
     ++rim_frames_;
+    if (match_.psr > 0.0) psr_tracked_ = psr_tracked_ == 0.0 ? match_.psr : psr_tracked_ + kPsrRate * (match_.psr - psr_tracked_);
     model_.learn(contour_, scratch_);
     learn_colours(kColourRate);
     learn_looks(kFilterRate, true);
@@ -364,10 +373,52 @@ bool Tracker::knows_target() const { return person_start_ || rim_frames_ >= kKno
 
 bool Tracker::look_again(TimePoint deadline) {
     if (!filter_.valid() || !knows_target()) return false;
-    const FilterMatch match = filter_.locate(smoothed_, *chroma_, last_seen_);
-    if (match.psr < kConfidentPsr) return false;
     const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
-    return begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
+    // First where it was last seen ...
+    const FilterMatch near = filter_.locate(smoothed_, *chroma_, last_seen_);
+    if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline)) return true;
+    // ... then anywhere in the frame, where a match must be about as clear as the target's were.
+    const FilterMatch found = search_frame();
+    if (found.psr < std::max(kConfidentPsr, kRedetectShare * psr_tracked_)) return false;
+    const FilterMatch match = filter_.locate(smoothed_, *chroma_, found.at);  // centred on it: learned from there
+    return match.psr >= kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
+}
+
+const GreyImage& Tracker::aligned_previous() {
+    const ViewShift& view = view_motion_.since_previous();
+    if (view.still) return previous_;
+    // This frame at x is the previous one at x − shift; where that is off the previous frame, this
+    // frame's own pixel stands in (no difference there).
+    for (int y = 0; y < kFrameSize; ++y)
+        for (int x = 0; x < kFrameSize; ++x) {
+            const double px = x - view.shift.x, py = y - view.shift.y;
+            std::uint8_t& out = aligned_previous_.at(x, y);
+            if (px < 0.0 || py < 0.0 || px > kFrameSize - 1 || py > kFrameSize - 1) {
+                out = frame_->at(x, y);
+                continue;
+            }
+            const int i = std::min(static_cast<int>(px), kFrameSize - 2), j = std::min(static_cast<int>(py), kFrameSize - 2);
+            const double fx = px - i, fy = py - j;
+            const double top = previous_.at(i, j) + fx * (previous_.at(i + 1, j) - previous_.at(i, j));
+            const double bottom = previous_.at(i, j + 1) + fx * (previous_.at(i + 1, j + 1) - previous_.at(i, j + 1));
+            out = static_cast<std::uint8_t>(std::lround(top + fy * (bottom - top)));
+        }
+    return aligned_previous_;
+}
+
+FilterMatch Tracker::search_frame() {
+    const int per_axis = std::max(1, static_cast<int>(std::ceil(2.0 * kFrameSize / filter_.window_px())));
+    const double spacing = static_cast<double>(kFrameSize) / per_axis;
+    FilterMatch best;
+    for (int k = 0; k < kSearchWindows; ++k) {
+        const int window = search_cursor_++ % (per_axis * per_axis);
+        const Point centre{(window % per_axis + 0.5) * spacing, (window / per_axis + 0.5) * spacing};
+        const FilterMatch m = filter_.locate(smoothed_, *chroma_, centre);
+        const bool in_frame = m.at.x >= 0.0 && m.at.y >= 0.0 && m.at.x <= kFrameSize - 1 && m.at.y <= kFrameSize - 1;
+        if (in_frame && m.psr > best.psr) best = m;
+    }
+    search_cursor_ %= per_axis * per_axis;
+    return best;
 }
 
 void Tracker::follow(Point last) {
@@ -385,6 +436,7 @@ const char* Tracker::check_contour(Point predicted, bool confident) {
 }
 
 void Tracker::declare_lost(const char* reason) {
+    search_cursor_ = 0;
     result_.state = TrackState::Lost;
     result_.has_contour = false;
     result_.lost_reason = reason;
@@ -409,7 +461,7 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     }
     if (++still_frames_ % kWatchWindowFrames == 0) motion_inside_ = motion_outside_ = 0;
     // A start point from outside is the target, moving or not, until it has moved.
-    if (still_frames_ < kStillFrames || !watched_ || !detection_allowed_) return true;
+    if (still_frames_ < kStillFrames || !watched_ || !detection_allowed_ || !view_motion_.since_previous().still) return true;
     result_.detection = detector_.detect(previous_, frame, tunables_.detect);
     const Detection& d = result_.detection;
     if (!d.found) return true;
@@ -439,8 +491,11 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     float sum = 0.0f;
     for (float s : sums) sum += s;
     model_.follow_exposure(sum / static_cast<float>(kFramePixels));
-    // Only a still camera has a background (a turning one moves what it had learned), and only the
-    // foreground term uses it: with the term's weight at 0 it is not kept at all.
+    // The caller says whether the camera was to hold still; the view's own motion says whether it
+    // did (a recording, a camera shaken or on a vehicle). Frame differencing needs the view's shift
+    // known, to align the two frames. The background is kept on the caller's word, and only for the
+    // foreground term: with the term's weight at 0 it is not kept at all.
+    view_motion_.take(smoothed_);
     const bool keep_background = detection_allowed_ && tunables_.rays.foreground_weight > 0.0;
     if (keep_background) background_.rate(smoothed_);
     else background_.reset();
@@ -483,8 +538,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
             start_box_.reset();
         } else if (look_again(deadline)) {
             found = true;
-        } else if (has_previous_ && detection_allowed_) {
-            result_.detection = detector_.detect(previous_, frame, tunables_.detect);
+        } else if (has_previous_ && detection_allowed_ && view_motion_.since_previous().known) {
+            result_.detection = detector_.detect(aligned_previous(), frame, tunables_.detect);
             const Detection& d = result_.detection;
             if (d.found) found = begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
         }

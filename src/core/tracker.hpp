@@ -15,6 +15,7 @@
 #include "core/correlation_filter.hpp"
 #include "core/gaussian_smoother.hpp"
 #include "core/motion_detector.hpp"
+#include "core/view_motion.hpp"
 
 namespace rays {
 
@@ -61,9 +62,16 @@ private:
     // The new track's first contour from m with the prior and looks set up: false if it is no target.
     bool first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline);
     bool reacquire_afresh(Point m, double radius, TimePoint deadline);
-    // After a loss, the filter looks for the target's looks round where it was last seen: true, and
-    // the track resumes, where it finds them and a contour round them as grey as the target.
+    // After a loss, the filter looks for the target's looks round where it was last seen, then over
+    // the whole frame: true, and the track resumes, where it finds them and a contour round them as
+    // grey as the target.
     bool look_again(TimePoint deadline);
+    // The best match in the next kSearchWindows windows of a sweep over the frame on a grid of half
+    // the filter's window (the sweep goes on in the next frame where this one stopped).
+    FilterMatch search_frame();
+    // The previous frame aligned with this one by the view's shift (the previous frame itself when
+    // the view stood still), so that differencing shows what moved in the scene.
+    const GreyImage& aligned_previous();
     // Whether the filter knows the target: one a person pointed at, or one whose rim it has followed
     // for a while (a detector's start may be on clutter).
     bool knows_target() const;
@@ -102,6 +110,7 @@ private:
     bool has_previous_ = false;
     MotionDetector detector_;
     BackgroundModel background_;  // the still camera's background, for the rays' foreground term
+    ViewMotion view_motion_;      // whether the view itself moved since the previous frame
     ActiveRays rays_;
     PolarPrior prior_;
     TargetModel model_;
@@ -119,12 +128,15 @@ private:
     std::vector<float> scratch_;
     int last_count_ = 0;
     Point last_seen_;  // the last contour's centroid
+    int search_cursor_ = 0;  // the next window of search_frame()'s sweep
+    double psr_tracked_ = 0.0;  // the filter's mean PSR on the target while its rim was followed
     Point velocity_;
     std::optional<Point> start_point_;
     std::optional<Box> start_box_;  // a box start: start_point_ is its centre
     bool reacquire_ = false;  // start_point_ is a re-acquisition of the last target
     std::optional<Point> external_prediction_;  // from predict_next(), for the next frame only
-    bool detection_allowed_ = true;
+    bool detection_allowed_ = true;  // the caller's word: the camera was to hold still
+    GreyImage aligned_previous_;     // the previous frame moved as the view moved, for differencing
     int lost_frames_ = 0;
     int untracked_frames_ = 0;  // frames since the last one with a contour
     int still_frames_ = -1;   // frames the track has stood still near still_at_ (-1: a new track)

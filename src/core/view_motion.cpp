@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "core/view_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace rays {
+namespace {
+
+constexpr float kFlatSpread = 0.5f;  // grey: a profile flatter than this (a clear sky) tells no shift
+// Of two normalised profiles, the mean squared difference where they match: 2 (1 − correlation).
+// Bands whose best match is worse (correlation below 1/2: noise, or a view that changed there)
+// tell no shift.
+constexpr double kMatchCost = 1.0;
+
+// Removes the profile's mean and scales it to unit spread (an exposure change is not motion);
+// false when it is too flat to tell a shift.
+bool normalise(std::array<float, kFrameSize>& p) {
+    double sum = 0.0, squares = 0.0;
+    for (float v : p) {
+        sum += v;
+        squares += static_cast<double>(v) * v;
+    }
+    const double mean = sum / kFrameSize;
+    const double spread = std::sqrt(std::max(0.0, squares / kFrameSize - mean * mean));
+    if (spread < kFlatSpread) return false;
+    for (float& v : p) v = static_cast<float>((v - mean) / spread);
+    return true;
+}
+
+}  // namespace
+
+std::optional<double> ViewMotion::best_shift(const Profile& before, const Profile& now) {
+    // cost(s): mean squared difference where now(i) and before(i − s) overlap.
+    std::array<double, 2 * kMaxShiftPx + 1> cost{};
+    for (int s = -kMaxShiftPx; s <= kMaxShiftPx; ++s) {
+        double sum = 0.0;
+        const int from = std::max(0, s), to = std::min(kFrameSize, kFrameSize + s);
+        for (int i = from; i < to; ++i) {
+            const double d = now[i] - before[i - s];
+            sum += d * d;
+        }
+        cost[s + kMaxShiftPx] = sum / (to - from);
+    }
+    const int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
+    if (cost[best] > kMatchCost) return std::nullopt;
+    if (best == 0 || best == 2 * kMaxShiftPx) return best - kMaxShiftPx;
+    // Sub-pixel: the parabola through the best shift and its neighbours.
+    const double l = cost[best - 1], c = cost[best], r = cost[best + 1];
+    const double curvature = l - 2.0 * c + r;
+    const double offset = curvature > 0.0 ? std::clamp(0.5 * (l - r) / curvature, -0.5, 0.5) : 0.0;
+    return best - kMaxShiftPx + offset;
+}
+
+bool ViewMotion::agreed_shift(const Projections& before, const Projections& now, double& shift) {
+    int n = 0;
+    for (int b = 0; b < kBands; ++b) {
+        if (!before.tells[b] || !now.tells[b]) continue;
+        if (const std::optional<double> s = best_shift(before.profile[b], now.profile[b])) shifts_[n++] = *s;
+    }
+    shift = 0.0;
+    // Still, if enough bands did not move or cannot tell (a plain background round a lone mover
+    // shows nothing else moving); else moved by the shift with the most bands within kAgreePx of it
+    // (the mean of those), if they are enough.
+    int still = kBands - n;
+    for (int i = 0; i < n; ++i) still += std::abs(shifts_[i]) < kAgreePx;
+    if (kShare * still >= kBands) return true;
+    int most = 0;
+    for (int i = 0; i < n; ++i) {
+        int support = 0;
+        double sum = 0.0;
+        for (int j = 0; j < n; ++j)
+            if (std::abs(shifts_[j] - shifts_[i]) < kAgreePx) {
+                ++support;
+                sum += shifts_[j];
+            }
+        if (support > most) {
+            most = support;
+            shift = sum / support;
+        }
+    }
+    return kShare * most >= kBands;
+}
+
+void ViewMotion::take(const FloatImage& smoothed) {
+    compared_ = has_previous_;
+    if (has_previous_) {
+        previous_columns_ = columns_;
+        previous_rows_ = rows_;
+    }
+    constexpr int kBandPx = kFrameSize / kBands;
+    for (auto& p : columns_.profile) p.fill(0.0f);
+    for (int y = 0; y < kFrameSize; ++y) {
+        const float* row = smoothed.row(y);
+        Profile& columns = columns_.profile[y / kBandPx];
+        for (int x = 0; x < kFrameSize; ++x) columns[x] += row[x];
+        for (int b = 0; b < kBands; ++b) {
+            float sum = 0.0f;
+            for (int x = b * kBandPx; x < (b + 1) * kBandPx; ++x) sum += row[x];
+            rows_.profile[b][y] = sum;
+        }
+    }
+    for (int b = 0; b < kBands; ++b) {
+        for (float& v : columns_.profile[b]) v /= kBandPx;
+        for (float& v : rows_.profile[b]) v /= kBandPx;
+        columns_.tells[b] = normalise(columns_.profile[b]);
+        rows_.tells[b] = normalise(rows_.profile[b]);
+    }
+    has_previous_ = true;
+    measured_ = false;
+}
+
+const ViewShift& ViewMotion::since_previous() {
+    if (measured_) return view_;
+    view_ = {};
+    // Horizontal bands' column sums tell the shift along x, vertical bands' row sums along y.
+    if (compared_)
+        view_.known = agreed_shift(previous_columns_, columns_, view_.shift.x) & agreed_shift(previous_rows_, rows_, view_.shift.y);
+    view_.still = view_.known && view_.shift.x == 0.0 && view_.shift.y == 0.0;
+    measured_ = true;
+    return view_;
+}
+
+}  // namespace rays

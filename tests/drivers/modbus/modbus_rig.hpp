@@ -60,15 +60,17 @@ struct Rig {
     std::string error;
 
     // transport "tcp" or "rtu"; `map` is the INI text of the map (custom_map_ini() or "preset = ...").
-    Rig(const std::string& name, const std::string& transport, const std::string& map, const std::string& extra = "") {
+    // A reply later than timeout_ms is none: short, so that the fault tests see one soon.
+    Rig(const std::string& name, const std::string& transport, const std::string& map, const std::string& extra = "",
+        int timeout_ms = 40) {
         const std::string dir = scratch_dir();
         ini_path = dir + "/" + name + ".ini";
         record_path = dir + "/" + name + ".csv";
         link = dir + "/" + name + ".pty";
         const int port = free_tcp_port();
         std::ofstream(ini_path) << "[modbus]\ntransport = " << transport << "\nport = " << port << "\ndevice = " << link
-                                << "\ntimeout_ms = 40\nretries = 1\nfault_after_failures = 2\ncommand_timeout_ms = "
-                                   "300\npoll_ms = 10\n"
+                                << "\ntimeout_ms = " << timeout_ms
+                                << "\nretries = 1\nfault_after_failures = 2\ncommand_timeout_ms = 300\npoll_ms = 10\n"
                                 << map << extra;
         if (auto problem = config::load_ini(ini_path, ptu::modbus_params(), settings)) error = problem->to_string();
         std::vector<std::string> args{RAYS_PTU_SIM, "--config", ini_path, "--record", record_path};

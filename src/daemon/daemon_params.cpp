@@ -47,7 +47,7 @@ void add_camera(ParamTable<DaemonConfig>& table) {
 
 void add_sim(ParamTable<DaemonConfig>& table) {
     table.section("sim", ParamKind::Capacity, &DaemonConfig::sim)
-        .add_choice("scenario", &SimSettings::scenario, "soak|soak-clutter|patrol|ramp|crowd",
+        .add_choice("scenario", &SimSettings::scenario, "soak|soak-clutter|patrol|ramp|crowd|horizon",
                     "what the simulated camera sees: the 30-minute soak path against the sky or through "
                     "buildings, a walker on patrol, a target speeding up, several targets")
         .add("seed", &SimSettings::seed, "", 0, 1000000, "seed of the simulated world and its noise")

@@ -64,7 +64,7 @@ struct Scenario {
     double initial_tilt_rad = 0;
 };
 
-// patrol, soak, ramp, crowd (described in scenario_catalog.cpp); nullopt for another name.
+// patrol, soak, soak-clutter, ramp, crowd, horizon (described in scenario_catalog.cpp); nullopt for another name.
 std::optional<Scenario> make_scenario(std::string_view name, std::uint64_t seed);
 std::span<const std::string_view> scenario_names();
 

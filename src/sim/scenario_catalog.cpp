@@ -150,13 +150,39 @@ Scenario crowd() {
     return s;
 }
 
+// A textured walker 16° tall (grey 70 ± 30 of texture) walking up and down across the horizon
+// (−1…+4°, sky above, textured ground below, buildings standing on it) between azimuths −50 and +45°
+// at 6–10 deg/s with pauses (a 40 s round), its centre from −8° to +6° of elevation, so that the
+// horizon line runs across its body, then its legs; three poles 1.3° wide in front at azimuths −25,
+// 5 and 30°. The failure it is for: a contour that slides onto the horizon's long straight edge and
+// tilts the unit to the sky. Noise σ 3; the exposure drifts by ±10 % over 60 s.
+Scenario horizon() {
+    Scenario s;
+    const auto walk = WalkPlan(-50, -8)
+                          .walk_to(-10, 6, 8)
+                          .pause(2)
+                          .walk_to(45, -4, 10)
+                          .pause(1.5)
+                          .walk_to(10, 4, 6)
+                          .pause(1)
+                          .walk_to(-50, -8, 9)
+                          .pause(1)
+                          .path();
+    s.targets.push_back({WalkerShape{16}, 70, 30, 1.0, walk, {}});
+    for (const auto& [azimuth, grey] : {std::pair{-25.0, 50.0}, {5.0, 140.0}, {30.0, 85.0}})
+        s.occluders.push_back(bar_deg(azimuth - 0.65, azimuth + 0.65, -60, 45, grey));
+    s.noise_sigma = 3;
+    s.exposure = {0.1, 60, 1, 0};
+    return s;
+}
+
 struct Entry {
     std::string_view name;
     Scenario (*make)();
 };
 
 constexpr std::array kCatalog{Entry{"patrol", patrol}, Entry{"soak", soak}, Entry{"soak-clutter", soak_clutter},
-                           Entry{"ramp", ramp}, Entry{"crowd", crowd}};
+                           Entry{"ramp", ramp}, Entry{"crowd", crowd}, Entry{"horizon", horizon}};
 constexpr auto kNames = [] {
     std::array<std::string_view, kCatalog.size()> names{};
     for (std::size_t i = 0; i < kCatalog.size(); ++i) names[i] = kCatalog[i].name;

@@ -33,7 +33,7 @@ double cos_deg(double degrees) { return std::cos(degrees * std::numbers::pi / 18
 }  // namespace
 
 TEST_CASE("every named scenario exists, points the unit at its primary target and keeps the seed") {
-    REQUIRE(scenario_names().size() == 5);
+    REQUIRE(scenario_names().size() == 6);
     for (std::string_view name : scenario_names()) {
         const Scenario s = named(name);
         CHECK(s.name == name);
@@ -70,6 +70,34 @@ TEST_CASE("patrol: the walker crosses ±40° at 7–15 deg/s with pauses, and th
     CHECK(second_present > 0.25 * 120 / kStep);
     CHECK(second_present < 0.5 * 120 / kStep);
     CHECK(s.exposure.gain(12.5) == Approx(1.12));  // a quarter of the 50 s drift
+}
+
+TEST_CASE("horizon: the textured walker walks across the horizon at 6–10 deg/s with pauses, past three poles") {
+    const Scenario s = named("horizon");
+    const Target& walker = s.targets[s.primary];
+    REQUIRE(std::holds_alternative<WalkerShape>(walker.shape));
+    CHECK(walker.texture_amplitude > 0.0);
+    double az_lo = 0, az_hi = 0, el_lo = 0, el_hi = 0, fastest = 0, paused_s = 0;
+    constexpr double kStep = 0.05;
+    for (double t = 0; t < 120.0; t += kStep) {
+        const PathPoint at = primary_at(s, t);
+        az_lo = std::min(az_lo, at.position.azimuth * kDegPerRad);
+        az_hi = std::max(az_hi, at.position.azimuth * kDegPerRad);
+        el_lo = std::min(el_lo, at.position.elevation * kDegPerRad);
+        el_hi = std::max(el_hi, at.position.elevation * kDegPerRad);
+        const double speed = speed_deg_s(s, t);
+        fastest = std::max(fastest, speed);
+        if (speed < 1e-9) paused_s += kStep;
+    }
+    CHECK(az_lo == Approx(-50.0).margin(0.01));
+    CHECK(az_hi == Approx(45.0).margin(0.01));
+    // The walker is 16° tall: from −8° its head is at 0°, from +6° its feet at −2°; the horizon lies
+    // within −1…+4°, so it runs across the walker's body all the way.
+    CHECK(el_lo == Approx(-8.0).margin(0.01));
+    CHECK(el_hi == Approx(6.0).margin(0.01));
+    CHECK(fastest == Approx(10.0).margin(0.01));
+    CHECK(paused_s > 10.0);
+    CHECK(s.occluders.size() == 3);
 }
 
 TEST_CASE("ramp: the peak speed of each swing grows from 5 to 400 deg/s over 160 s, as documented") {

@@ -8,7 +8,7 @@
 namespace rays::soak {
 
 inline constexpr const char* kUsage =
-    "usage: rays-soak [--frames N] [--scenario soak|soak-clutter|ramp|patrol|crowd] [--seed N] [--config FILE.ini]\n"
+    "usage: rays-soak [--frames N] [--scenario soak|soak-clutter|ramp|patrol|crowd|horizon] [--seed N] [--config FILE.ini]\n"
     "                 [--law predictive|proportional] [--method rays|snake]\n"
     "                 [--gain G | --sweep-gain G1,G2,... | --compare G1,G2,...]\n"
     "                 [--budget-ms B] [--json] [--plot FILE.png] [--trace FILE.csv]\n"

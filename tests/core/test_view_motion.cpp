@@ -39,7 +39,7 @@ ViewShift measure(ViewMotion& motion, const FloatImage& image) {
 
 }  // namespace
 
-TEST_CASE("The first frame's view motion is unknown; a still textured view is still", "[view]") {
+TEST_CASE("The first frame's view motion is unknown, and a still textured view is still", "[view]") {
     auto image = std::make_unique<FloatImage>();
     ViewMotion motion;
     view(*image, {0.0, 0.0});

@@ -115,8 +115,11 @@ const ViewShift& ViewMotion::since_previous() {
     if (measured_) return view_;
     view_ = {};
     // Horizontal bands' column sums tell the shift along x, vertical bands' row sums along y.
-    if (compared_)
-        view_.known = agreed_shift(previous_columns_, columns_, view_.shift.x) & agreed_shift(previous_rows_, rows_, view_.shift.y);
+    if (compared_) {
+        const bool x_known = agreed_shift(previous_columns_, columns_, view_.shift.x);
+        const bool y_known = agreed_shift(previous_rows_, rows_, view_.shift.y);
+        view_.known = x_known && y_known;
+    }
     view_.still = view_.known && view_.shift.x == 0.0 && view_.shift.y == 0.0;
     measured_ = true;
     return view_;

@@ -337,11 +337,20 @@ void ActiveRays::extract(const FloatImage& image, Point m0, PolarPrior& prior, b
         if (!out.deadline_hit) levels = level + 1;
     }
     if (active > coarse_rays) {
-        jumps_ = use_temporal && allow_jumps_;
+        jumps_ = use_temporal && t_.jump_cost > 0.0;
         solve(prior.mean_radius(), prior);
         write_contour(m, out);
     }
+    last_m_ = m;
     out.levels = levels;
+}
+
+bool ActiveRays::solve_without_jumps(const PolarPrior& prior, Contour& out) {
+    if (!jumps_) return false;
+    jumps_ = false;
+    solve(prior.mean_radius(), prior);
+    write_contour(last_m_, out);  // its levels, iterations and deadline as they were
+    return true;
 }
 
 }  // namespace rays

@@ -20,8 +20,6 @@ public:
     // Applies tunables within the capacities; false (and nothing changed) when they do not fit.
     bool configure(const RaysTunables& tunables);
     const RayTable& table() const { return table_; }
-    // Whether a tracking extraction's final contour may use rays.jump_cost (on by default).
-    void allow_jumps(bool allowed) { allow_jumps_ = allowed; }
     // The still camera's foreground (BackgroundModel) for the extractions that follow; null: none.
     void use_foreground(const FloatImage* foreground) { foreground_ = foreground; }
     // The target's colour likelihood (AppearanceModel) for the extractions that follow; null: none.
@@ -35,6 +33,12 @@ public:
     // (for measuring the any-time curve). No allocation.
     void extract(const FloatImage& image, Point m, PolarPrior& prior, bool use_temporal, const TargetModel& model,
                  const Clock& clock, TimePoint deadline, Contour& out, int max_level = -1);
+    // The last extraction's final contour again, with eq. 9 whole: a tracking contour's smoothness is
+    // truncated at rays.jump_cost, which may let part of it out onto clutter. The same rays and
+    // hypotheses: only the ring DP runs again (what a second extraction without the truncation would
+    // find, at a fraction of its time). `prior` is the one the extraction used. False, and `out`
+    // untouched, when that contour was found without the truncation.
+    bool solve_without_jumps(const PolarPrior& prior, Contour& out);
 
 private:
     void shoot(int ray, const FloatImage& image, Point m, const PolarPrior& prior, bool use_temporal,
@@ -52,8 +56,8 @@ private:
     RayProfiler profiler_;
     RingDp dp_;
     int state_stride_;                    // max_hypotheses + 1: the "no edge" state is last
-    bool allow_jumps_ = true;             // see allow_jumps()
     bool jumps_ = false;                  // the ring DP truncates its smoothness at the jump cost
+    Point last_m_;                        // the last extraction's final reference point
     const FloatImage* foreground_ = nullptr;  // see use_foreground()
     const LikelihoodMap* likelihood_ = nullptr;  // see use_likelihood()
     float rim_contrast_ = 0;              // normaliser of eq. 7 for this extraction

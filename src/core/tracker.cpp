@@ -303,13 +303,8 @@ void Tracker::track(TimePoint deadline) {
         prior_.set_polygon(last_points_.data(), last_count_, last_open_.data());
         rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
         reason = check_contour(predicted, confident);
-        if (reason && tunables_.rays.jump_cost > 0.0) {
-            // The jumps may have let part of the contour out onto clutter: the smooth contour instead.
-            rays_.allow_jumps(false);
-            rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
-            rays_.allow_jumps(true);
-            reason = check_contour(predicted, confident);
-        }
+        // The jumps may have let part of the contour out onto clutter: the smooth contour instead.
+        if (reason && rays_.solve_without_jumps(prior_, contour_)) reason = check_contour(predicted, confident);
         if (!reason) break;
     }
     // The filter stands for the rim only on a target it knows: one a person pointed at, or one

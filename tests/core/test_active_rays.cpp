@@ -392,6 +392,39 @@ TEST_CASE("Temporal term: the previous contour holds the target against a distra
     CHECK(with >= without + 0.05);
 }
 
+TEST_CASE("ActiveRays: the contour again without jumps is the one an extraction without them finds", "[active_rays]") {
+    // The tracker's second look when a tracking contour fails its check: the ring DP again, eq. 9
+    // whole, on the rays and hypotheses already found. A bright slab beside the target gives the
+    // truncated smoothness something to jump to.
+    auto frame = draw(kTarget, kBackground, kDisc, 3, 24, [](Canvas& c) { c.rect(87, 30, 127, 98, 220); });
+    auto clean = clean_disc();
+    Extraction x;
+    const std::vector<Point> previous = points_of(x.run(*clean, {kCx, kCy}));
+    CHECK_FALSE(x.rays.solve_without_jumps(x.prior, x.contour));  // a first contour has no jumps
+
+    RaysTunables smooth = x.tunables;
+    smooth.jump_cost = 0.0;
+    Extraction whole;
+    whole.set(smooth);
+    whole.prior.set_polygon(previous.data(), static_cast<int>(previous.size()));
+    const std::vector<Point> expected = points_of(whole.run_with_prior(*frame, {kCx, kCy}, true));
+
+    x.prior.set_polygon(previous.data(), static_cast<int>(previous.size()));
+    const std::vector<Point> jumped = points_of(x.run_with_prior(*frame, {kCx, kCy}, true));
+    REQUIRE(x.rays.solve_without_jumps(x.prior, x.contour));
+    const std::vector<Point> again = points_of(x.contour);
+    REQUIRE(again.size() == expected.size());
+    double differs = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < again.size(); ++i) {
+        differs = std::max(differs, std::hypot(jumped[i].x - again[i].x, jumped[i].y - again[i].y));
+        worst = std::max(worst, std::hypot(expected[i].x - again[i].x, expected[i].y - again[i].y));
+    }
+    INFO("largest move by leaving the jumps out " << differs << " px");
+    CHECK(differs > 1.0);   // the jumps made a difference here ...
+    CHECK(worst < 1e-6);    // ... and the second solve undoes it exactly
+    CHECK_FALSE(x.rays.solve_without_jumps(x.prior, x.contour));  // once
+}
+
 TEST_CASE("Region term: m on a thin bright bar across the target's middle still finds the rim", "[active_rays][terms]") {
     // A pole (220, 3 px wide) in front of the disc's middle, and m on it, as when the target passes
     // behind a pole: every ray starts on the pole. The region term judges the inside by the part of

@@ -279,11 +279,12 @@ void Tracker::track(TimePoint deadline) {
         match_.psr = 0.0;  // a target found off the frame is not found
     const bool confident = match_.psr >= kConfidentPsr;
     if (confident) v = {match_.at.x - last.x, match_.at.y - last.y};
-    // Constant velocity first; when that contour fails the attention check (the target turned or
-    // stopped), the target held still, then reversed — a turn must not cost the track. An outside
+    // Where a confident filter match says the target is, once: a measurement, not a guess. Without
+    // one, constant velocity first; when that contour fails the attention check (the target turned
+    // or stopped), the target held still, then reversed — a turn must not cost the track. An outside
     // prediction (predict_next) goes first, with the image's own constant velocity as the fallback.
     Point steps[] = {v, {0.0, 0.0}, {-v.x, -v.y}};
-    int tries = std::hypot(v.x, v.y) >= kRetryMinSpeedPx ? 3 : 1;
+    int tries = !confident && std::hypot(v.x, v.y) >= kRetryMinSpeedPx ? 3 : 1;
     if (external_prediction_) {
         steps[2] = steps[0];
         steps[0] = {external_prediction_->x - last.x, external_prediction_->y - last.y};

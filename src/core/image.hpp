@@ -24,14 +24,16 @@ using GreyImage = Plane<std::uint8_t>;   // what a frame source delivers
 using FloatImage = Plane<float>;         // the smoothed image the rays sample
 
 // The image at (x, y), bilinear between pixel centres; a point off the image reads its border.
-inline float sample_bilinear(const FloatImage& image, double x, double y) {
+template <class T>
+float sample_bilinear(const Plane<T>& image, double x, double y) {
     const double cx = std::clamp(x, 0.0, kFrameSize - 1.001), cy = std::clamp(y, 0.0, kFrameSize - 1.001);
     const int i = static_cast<int>(cx), j = static_cast<int>(cy);
     const float fx = static_cast<float>(cx - i), fy = static_cast<float>(cy - j);
-    const float* r0 = image.row(j) + i;
-    const float* r1 = r0 + kFrameSize;
-    const float top = r0[0] + fx * (r0[1] - r0[0]);
-    const float bottom = r1[0] + fx * (r1[1] - r1[0]);
+    const T* r0 = image.row(j) + i;
+    const T* r1 = r0 + kFrameSize;
+    const float a = r0[0], b = r0[1], c = r1[0], d = r1[1];
+    const float top = a + fx * (b - a);
+    const float bottom = c + fx * (d - c);
     return top + fy * (bottom - top);
 }
 

@@ -388,16 +388,9 @@ const GreyImage& Tracker::aligned_previous() {
     for (int y = 0; y < kFrameSize; ++y)
         for (int x = 0; x < kFrameSize; ++x) {
             const double px = x - view.shift.x, py = y - view.shift.y;
-            std::uint8_t& out = aligned_previous_.at(x, y);
-            if (px < 0.0 || py < 0.0 || px > kFrameSize - 1 || py > kFrameSize - 1) {
-                out = frame_->at(x, y);
-                continue;
-            }
-            const int i = std::min(static_cast<int>(px), kFrameSize - 2), j = std::min(static_cast<int>(py), kFrameSize - 2);
-            const double fx = px - i, fy = py - j;
-            const double top = previous_.at(i, j) + fx * (previous_.at(i + 1, j) - previous_.at(i, j));
-            const double bottom = previous_.at(i, j + 1) + fx * (previous_.at(i + 1, j + 1) - previous_.at(i, j + 1));
-            out = static_cast<std::uint8_t>(std::lround(top + fy * (bottom - top)));
+            const bool off = px < 0.0 || py < 0.0 || px > kFrameSize - 1 || py > kFrameSize - 1;
+            aligned_previous_.at(x, y) = off ? frame_->at(x, y)
+                                             : static_cast<std::uint8_t>(std::lround(sample_bilinear(previous_, px, py)));
         }
     return aligned_previous_;
 }

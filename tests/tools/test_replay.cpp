@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// rays-replay end to end: a generated sequence in, JSON Lines and overlays out, errors as one line.
+// rays-replay end to end: a generated sequence in, JSON Lines and overlays out, errors as one line;
+// and rays-soak's overlay folder.
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -172,4 +173,21 @@ TEST_CASE("rays-replay refuses bad input with one line and a non-zero exit", "[t
     CHECK(run(std::string(RAYS_REPLAY) + " --input x --init 500,3") == 2);
     CHECK(run(std::string(RAYS_REPLAY) + " --input x --crop 1,2,3") == 2);
     fs::remove_all(dir);
+}
+
+TEST_CASE("rays-soak --overlay makes its folder or fails once before the run", "[tools]") {
+    const fs::path dir = temp_dir("soak") / "overlays" / "deep";
+    REQUIRE(run(std::string(RAYS_SOAK) + " --frames 3 --overlay " + dir.string() + " >/dev/null") == 0);
+    CHECK(fs::exists(dir / "frame-000000.png"));
+    CHECK(fs::exists(dir / "frame-000002.png"));
+
+    const fs::path blocked = temp_dir("soak-blocked") / "file";
+    std::ofstream(blocked) << "a file, not a folder";
+    CHECK(run(std::string(RAYS_SOAK) + " --frames 3 --overlay " + (blocked / "ov").string() + " >/dev/null") == 2);
+    CHECK(last_error().rfind("rays-soak: --overlay: cannot create " + (blocked / "ov").string(), 0) == 0);
+    std::ifstream in(error_file());
+    std::string line;
+    int lines = 0;
+    while (std::getline(in, line)) ++lines;
+    CHECK(lines == 1);
 }

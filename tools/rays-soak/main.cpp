@@ -4,6 +4,7 @@
 // rules and README.md for the figures.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "closed_loop.hpp"
@@ -175,6 +176,14 @@ int main(int argc, char** argv) {
     SoakRun run;
     run.frames = options.frames;
     run.overlay_dir = options.overlay_dir;
+    if (!run.overlay_dir.empty()) {  // made here, as rays-replay does: not a complaint per frame later
+        std::error_code ec;
+        std::filesystem::create_directories(run.overlay_dir, ec);
+        if (ec) {
+            std::fprintf(stderr, "rays-soak: --overlay: cannot create %s: %s\n", run.overlay_dir.c_str(), ec.message().c_str());
+            return 2;
+        }
+    }
     run.overlay_from_s = options.overlay_from_s;
     run.overlay_to_s = options.overlay_to_s;
     if (!options.config_path.empty()) {

@@ -101,5 +101,36 @@ for tid, r in rows.items():
     check(f"{tid} scored frames", r["frames"] == 12 and r["timed_frames"] == 12 and r["centre_in_box"] > 0,
           f"frames {r['frames']}, timed {r['timed_frames']}, centre_in_box {r['centre_in_box']}")
 
+# The nudged starts: 13 runs, init and 1-3 px from it; the row holds their means, the note the worst.
+# A wrapper in front of rays-replay notes each run's --init.
+starts_log = os.path.join(work, "starts.log")
+wrapper = os.path.join(work, "rays-replay-noting-starts")
+with open(wrapper, "w") as f:
+    f.write(f'#!/bin/sh\nprintf "%s\\n" "$*" >> "{starts_log}"\nexec "{os.path.abspath(RAYS_REPLAY)}" "$@"\n')
+os.chmod(wrapper, 0o755)
+keep = os.path.join(work, "nudged")
+p = subprocess.run([sys.executable, TOOL, "--rays-replay", wrapper, "--json", "--work", keep, "--trackers",
+                    "rays-point-nudged", seq], capture_output=True, text=True, env=env)
+print(p.stdout + p.stderr)
+check("nudged: exit 0", p.returncode == 0)
+try:
+    row = json.loads(p.stdout)["results"][0]
+except (ValueError, IndexError, KeyError):
+    row = {"status": "missing"}
+check("nudged: a scored row", row.get("status") == "ok" and row.get("tracker") == "rays-point-nudged", str(row))
+if row.get("status") == "ok":
+    with open(starts_log) as f:
+        inits = [line.split("--init ")[1].split()[0] for line in f if "--init " in line]
+    check("nudged: 13 runs, each from its own start", len(inits) == 13 and len(set(inits)) == 13, str(inits))
+    runs = [f"rays-point-nudged-{k}.jsonl" for k in range(13)]
+    scores = [score.score(score.load_run(os.path.join(keep, "disc", f)), truth) for f in runs]
+    mean = round(sum(x["centre_in_box"] for x in scores) / len(scores), 3)
+    worst = round(min(x["centre_in_box"] for x in scores), 3)
+    check("nudged: centre_in_box is the mean of the runs' scores", row["centre_in_box"] == mean, f"{row['centre_in_box']} / {mean}")
+    check("nudged: the worst start's centre_in_box", row["worst_centre_in_box"] == worst, f"{row['worst_centre_in_box']} / {worst}")
+p = tool("--trackers", "rays-point-nudged", seq)
+check("nudged: the table's note names the worst start per sequence",
+      "note: rays (point ±3): the mean of 13 starts" in p.stdout and "disc " in p.stdout.split("worst start's centre_in_box:")[-1])
+
 print(f"{len(failures)} failed" if failures else "all checks passed")
 sys.exit(1 if failures else 0)

@@ -22,11 +22,17 @@ PROC = 128  # rays-replay's processing frame (kFrameSize)
 TRACKERS = {
     "rays-point": ("rays (point)", "rays pt", "rays"),
     "rays-box": ("rays (box)", "rays box", "rays"),
+    "rays-point-nudged": ("rays (point ±3)", "", "rays"),
+    "rays-box-nudged": ("rays (box ±3)", "", "rays"),
     "csrt": ("CSRT", "csrt", "opencv"),
     "kcf": ("KCF", "kcf", "opencv"),
     "mosse": ("MOSSE", "mosse", "opencv"),
 }
+DEFAULT_TRACKERS = ["rays-point", "rays-box", "csrt", "kcf", "mosse"]
 BOX_UNSUPPORTED = "box start not supported by this rays-replay"
+# A user's click (or box) lands a few pixels from where the sequence's author put it: the nudged rows
+# start the rays from init and from 12 starts round it, in the sequence's pixels, and report the mean.
+NUDGES = [(0, 0), (1, 0), (-1, 0), (0, 1), (0, -1), (2, 2), (-2, 2), (2, -2), (-2, -2), (3, 0), (-3, 0), (0, 3), (0, -3)]
 
 DESCRIPTION = """\
 Runs the Active Rays tracker (rays-replay) and OpenCV's CSRT, KCF and MOSSE on each sequence folder and
@@ -46,6 +52,10 @@ Trackers (--trackers):
   rays-point  rays-replay --init X,Y from "init" (a user's click)
   rays-box    rays-replay --init X,Y,W,H from "init_box" (a rays-replay that refuses it gets the
               row "box start not supported by this rays-replay")
+  rays-point-nudged, rays-box-nudged  (not in the default) the same from 13 starts: init, and moved by
+              1 px along each axis, 2 px along both, 3 px along each; each measure is the mean over
+              the 13 runs (times: of their medians and p99s), and a note gives the worst
+              centre_in_box. How much the outcome hangs on the exact click.
   csrt, kcf   cv2.TrackerCSRT_create, cv2.TrackerKCF_create  } started on "init_box", on the same
   mosse       cv2.legacy.TrackerMOSSE_create                 } frames converted to BGR
 The sequence is given to rays-replay as it is (it scales to 128x128 itself); X,Y and the box are mapped
@@ -77,8 +87,8 @@ def parse_args(argv):
     ap.add_argument("sequences", nargs="+", metavar="SEQ_DIR", help="sequence folders (others are ignored, saying so)")
     ap.add_argument("--rays-replay", default=DEFAULT_RAYS_REPLAY, metavar="PATH",
                     help="the rays-replay binary (default: build/release/tools/rays-replay/rays-replay in this checkout)")
-    ap.add_argument("--trackers", default=",".join(TRACKERS), metavar="LIST",
-                    help="comma-separated, from " + ", ".join(TRACKERS) + " (default: all)")
+    ap.add_argument("--trackers", default=",".join(DEFAULT_TRACKERS), metavar="LIST",
+                    help="comma-separated, from " + ", ".join(TRACKERS) + " (default: " + ",".join(DEFAULT_TRACKERS) + ")")
     ap.add_argument("--json", action="store_true", help="print the results as one JSON object instead of the table")
     ap.add_argument("--overlay", metavar="DIR",
                     help="write DIR/SEQUENCE.y4m per sequence: the trackers side by side, contour or box drawn")
@@ -157,6 +167,29 @@ def run_rays(binary, video_path, init, out):
     return "failed", f"rays-replay exit {p.returncode}: {first}"
 
 
+def run_nudged(binary, video_path, start, out, truth, row):
+    """The rays from each of NUDGES' starts, scored; `row` gets the means and the worst centre_in_box."""
+    scores = []
+    for k, (dx, dy) in enumerate(NUDGES):
+        path = f"{out[:-len('.jsonl')]}-{k}.jsonl"
+        status, note = run_rays(binary, video_path, start(dx, dy), path)
+        if status != "ok":
+            return status, note
+        scores.append(score.score(score.load_run(path), truth))
+    means = {}
+    for key, v in scores[0].items():
+        values = [s[key] for s in scores]
+        if all(x == v for x in values):  # the same for every start (the frame counts): as it is
+            means[key] = v
+        else:
+            means[key] = None if any(x is None for x in values) else sum(values) / len(values)
+    row.update(rounded(means))
+    if row.get("centre_in_box") is not None:
+        worst = min(s["centre_in_box"] for s in scores)
+        row["worst_centre_in_box"] = round(worst, 3)
+    return "ok", ""
+
+
 def run_opencv(python, tracker, video_path, box, out, threads):
     cmd = [python, OPENCV_RUN, "--tracker", tracker, "--input", video_path,
            "--box", ",".join(repr(v) for v in box), "--out", out, "--threads", str(threads)]
@@ -192,20 +225,25 @@ def compare_sequence(seq, args, work, opencv_py, opencv_ok, log):
         rows.append(row)
         out = os.path.join(work, name, tid + ".jsonl")
         if kind == "rays":
-            if tid == "rays-point":
+            if tid.startswith("rays-point"):
                 if point is None:
                     point = [box[0] + box[2] / 2, box[1] + box[3] / 2]
                     row["note"] = "started at init_box's centre (meta.json has no init)"
-                init = list(proc(*point))
+                start = lambda dx, dy: list(proc(point[0] + dx, point[1] + dy))
             else:
                 if box is None:
                     row.update(status="skipped", note="meta.json has no init_box")
                     continue
                 # A box's edges scale as lengths: covering pixels x .. x+w-1, its left edge lies at
                 # x - 0.5 in centre coordinates, which maps to x/sx - 0.5 in processing pixels.
-                init = [box[0] / sx, box[1] / sy, box[2] / sx, box[3] / sy]
+                start = lambda dx, dy: [(box[0] + dx) / sx, (box[1] + dy) / sy, box[2] / sx, box[3] / sy]
             log(f"{name}: {label}")
-            status, note = run_rays(args.rays_replay, video_path, init, out)
+            if tid.endswith("-nudged"):
+                status, note = run_nudged(args.rays_replay, video_path, start, out, truth, row)
+                if status != "ok":
+                    row.update(status=status, note=note)
+                continue
+            status, note = run_rays(args.rays_replay, video_path, start(0, 0), out)
         else:
             if not opencv_ok.get(tid, False):
                 row.update(status="skipped", note=opencv_ok.get(tid + ":why", "OpenCV is not available"))
@@ -354,4 +392,10 @@ def main(argv=None):
         notes = sorted({(r["label"], r["note"]) for r in rows if r["status"] == "ok" and r["note"]})
         for label, note in notes:
             print(f"note: {label}: {note}")
+        for tid in args.trackers:
+            worst = [f"{r['sequence']} {r['worst_centre_in_box']:.3f}" for r in rows
+                     if r["tracker"] == tid and r.get("worst_centre_in_box") is not None]
+            if worst:
+                print(f"note: {TRACKERS[tid][0]}: the mean of {len(NUDGES)} starts (init, and 1-3 px from it); "
+                      f"the worst start's centre_in_box: {', '.join(worst)}")
     return 1 if failed else 0

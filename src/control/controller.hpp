@@ -56,6 +56,11 @@ public:
     // Where the target's reference point will be in a frame captured with the unit at `unit`;
     // nullopt when this controller does not predict.
     virtual std::optional<Point> expected_pixel(const UnitPose& unit) const = 0;
+    // Whether, with the target out of sight, the prediction is worth following (coasting): only a
+    // motion estimate that has settled. One made of a few sightings after a (re)start may be a
+    // contour on something that moves with the camera, whose rate is the unit's own: followed, it
+    // would run the unit away.
+    virtual bool can_coast() const = 0;
 };
 
 // The command with the deadband applied and each axis held within the velocity limit.

@@ -10,9 +10,16 @@ void PredictiveController::sighted(Point pixel, const UnitPose& unit, double con
     filter_.update(camera_.world_angles(pixel, unit.pan, unit.tilt), unit.t_s, 1.0 / std::max(confidence, 1e-3));
 }
 
+namespace {
+
+constexpr int kSettledSightings = 10;  // sightings folded in after the start before the prediction is trusted
+
+}  // namespace
+
+bool PredictiveController::can_coast() const { return filter_.started() && filter_.updates() >= kSettledSightings; }
+
 bool PredictiveController::consistent(Point pixel, const UnitPose& unit) const {
-    constexpr int kSettled = 10;  // sightings before the filter's prediction is trusted over the image
-    if (!filter_.started() || filter_.updates() < kSettled) return true;
+    if (!filter_.started() || filter_.updates() < kSettledSightings) return true;
     const double gate = filter_.settings().gate_sigma;
     return filter_.distance2(camera_.world_angles(pixel, unit.pan, unit.tilt), unit.t_s) <= gate * gate;
 }

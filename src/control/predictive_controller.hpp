@@ -25,6 +25,8 @@ public:
     bool consistent(Point pixel, const UnitPose& unit) const override;
     ptu::PtuCommand command(const UnitPose& unit) const override;
     std::optional<Point> expected_pixel(const UnitPose& unit) const override;
+    // Once the filter has settled (kSettledSightings folded in since its start).
+    bool can_coast() const override;
 
     const TargetFilter& filter() const { return filter_; }
 

@@ -18,6 +18,7 @@ public:
     bool consistent(Point, const UnitPose&) const override { return true; }
     ptu::PtuCommand command(const UnitPose& unit) const override;
     std::optional<Point> expected_pixel(const UnitPose&) const override { return std::nullopt; }
+    bool can_coast() const override { return false; }
 
 private:
     CameraModel camera_;

@@ -106,7 +106,7 @@ void add_control(ParamTable<DaemonConfig>& table) {
              "the unit counts as still below this rate: frame differencing finds new targets only then")
         .add("coast_s", &ControlSettings::coast_s, "s", 0, 60,
              "predictive: after losing the contour, follow the prediction and look for the target where it "
-             "should be for this long")
+             "should be for this long (only a target seen 10 frames in a row before: otherwise stop at once)")
         .add_choice("lost_action", &ControlSettings::lost_action, "hold|search|home",
                     "with no target for lost_timeout_s: keep holding still, search left and right, or go home")
         .add("lost_timeout_s", &ControlSettings::lost_timeout_s, "s", 0, 3600,

@@ -18,6 +18,10 @@ using Micros = std::chrono::duration<float, std::micro>;
 // The loop writes to the unit at least this often, frames or not, so the limiter's braking plan holds.
 constexpr Seconds kLongestWait{0.05};
 constexpr double kArrivalS = 0.1;         // a position command this many seconds of still-rate away has arrived
+// The prediction is followed while the target is out of sight only if it was seen this many frames in
+// a row before: a contour found for a frame or two after a gap (on something else, or on something
+// that moves with the camera) gives the controller a rate it would run the unit away on.
+constexpr int kCoastRun = 10;
 
 ptu::PtuCommand position_command(double pan_rad, double tilt_rad) {
     ptu::PtuCommand command;
@@ -205,10 +209,16 @@ void FrameLoop::track_frame(TimePoint now) {
         target_area_.update(contour.area);
         controller_->sighted(contour.centroid, at_capture, confidence);
         last_sighting_s_ = at_capture.t_s;
-    } else if (controller_->has_target() &&
-               (!controller_->expected_pixel(at_capture) ||
-                at_capture.t_s - last_sighting_s_ > tunables_.control.coast_s)) {
-        // A target the controller cannot predict is lost at once; a predicted one after coast_s.
+        ++sighted_run_;
+    } else {
+        if (sighted_run_ > 0) run_before_gap_ = sighted_run_;
+        sighted_run_ = 0;
+    }
+    if (!result.has_contour && controller_->has_target() &&
+        (!controller_->expected_pixel(at_capture) || !controller_->can_coast() || run_before_gap_ < kCoastRun ||
+         at_capture.t_s - last_sighting_s_ > tunables_.control.coast_s)) {
+        // A target the controller cannot predict, or not trust to (its estimate not settled, or the
+        // target seen only briefly before this gap), is lost at once; a predicted one after coast_s.
         controller_->lost();
         lost_policy_.lost_at(at_capture.t_s, at_capture.pan, at_capture.tilt);
     }

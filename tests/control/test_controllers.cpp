@@ -75,6 +75,22 @@ TEST_CASE("the predictive controller feeds the target's rate forward once it has
     CHECK(if_stopped->x - 63.5 == Approx(kCamera.intrinsics().fx * std::tan(rate * 0.04)).margin(0.3));
 }
 
+TEST_CASE("the predictive controller is coasted on only once its estimate has settled") {
+    PredictiveController c(kCamera, settings(), {});
+    ProportionalController p(kCamera, settings());
+    CHECK_FALSE(c.can_coast());
+    // The first sighting starts the filter; ten more are folded in before it has settled.
+    for (int k = 0; k < 10; ++k) c.sighted({63.5, 63.5}, still_at(k * 0.04, 0.1, 0.0));
+    CHECK(c.has_target());
+    CHECK_FALSE(c.can_coast());  // a rate made of too little
+    c.sighted({63.5, 63.5}, still_at(0.40, 0.1, 0.0));
+    CHECK(c.can_coast());
+    c.lost();
+    CHECK_FALSE(c.can_coast());
+    p.sighted({63.5, 63.5}, still_at(0, 0.1, 0.0));
+    CHECK_FALSE(p.can_coast());  // no prediction to follow
+}
+
 TEST_CASE("the predictive controller stops outright on a still target near the centre") {
     PredictiveController c(kCamera, settings(), {});
     for (int k = 0; k <= 30; ++k) c.sighted({63.8, 63.3}, still_at(k * 0.04, 0.1, 0.0));

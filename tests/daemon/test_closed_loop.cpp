@@ -707,6 +707,53 @@ TEST_CASE("closed loop: without coasting (coast_s = 0) the same gap stops the un
     CHECK(last.telemetry.pan_cmd_deg_s == 0.0f);
 }
 
+TEST_CASE("closed loop: a contour seen for a few frames after a gap does not set the unit coasting") {
+    // The disc is tracked to 8 s; then 3 frames without it, then 4 frames with a decoy: a copy of it
+    // held at one place in the image, 12 px right of and 10 px above where the disc was, whatever the
+    // unit does (something that moves with the camera); then nothing. The decoy's sightings give the
+    // controller the unit's own rate and more toward the decoy: coasting on that after it vanishes
+    // would run the unit on. Seen only 4 frames in a row, it is not coasted on: the unit holds.
+    DaemonConfig config;
+    config.control.law = "predictive";
+    const auto path = waves(0, 0, {wave_deg(25, 16)}, {wave_deg(4, 13, 1)});
+    Rig rig(config, camera_for(config, disc_scenario("decoy", path)));
+    const auto empty = camera_for(config, disc_scenario("decoy-empty", path, sim::Presence{1000, 999, 1000}));
+    auto hidden = std::make_unique<sim::SimView>();
+    auto last_seen = std::make_unique<sim::SimView>();
+    const long gap_from = rig.frame_at(8.0), decoy_from = gap_from + 3, decoy_to = decoy_from + 4;
+    const Rig::Hook start = track_truth_at_start(rig);
+    rig.run_until(10.0, [&](Rig::Shot& shot) {
+        start(shot);
+        if (shot.k == gap_from - 1) *last_seen = shot.view;
+        if (shot.k < gap_from) return;
+        empty->render(shot.t_s, shot.world_pan_rad, shot.world_tilt_rad, *hidden);
+        shot.view.image = hidden->image;
+        if (shot.k < decoy_from || shot.k >= decoy_to) return;
+        for (int y = 0; y < kFrameSize; ++y)
+            for (int x = 0; x < kFrameSize; ++x) {
+                const int dx = x + 12, dy = y - 10;
+                if (last_seen->mask.at(x, y) && dx < kFrameSize && dy >= 0) shot.view.image.at(dx, dy) = last_seen->image.at(x, y);
+            }
+    });
+    const std::vector<FrameRecord>& frames = rig.frames();
+    long decoy_seen = 0;
+    for (long k = decoy_from; k < decoy_to; ++k) decoy_seen += frames[static_cast<std::size_t>(k)].telemetry.has_contour;
+    INFO("the decoy was seen in " << decoy_seen << " of its 4 frames");
+    REQUIRE(decoy_seen >= 2);  // else the test shows nothing
+    // From two frames after the decoy on: no contour, no command, and the unit stays within a degree.
+    const FrameRecord& held = frames[static_cast<std::size_t>(decoy_to + 2)];
+    for (std::size_t i = static_cast<std::size_t>(decoy_to + 2); i < frames.size(); ++i) {
+        const FrameRecord& f = frames[i];
+        INFO("frame " << f.k << ": contour " << f.telemetry.has_contour << ", commanded " << f.telemetry.pan_cmd_deg_s
+                      << " / " << f.telemetry.tilt_cmd_deg_s << " deg/s, unit at " << f.pan_deg << " / " << f.tilt_deg);
+        CHECK_FALSE(f.telemetry.has_contour);
+        CHECK(f.telemetry.pan_cmd_deg_s == 0.0f);
+        CHECK(f.telemetry.tilt_cmd_deg_s == 0.0f);
+        CHECK(std::abs(f.pan_deg - held.pan_deg) <= 1.0);
+        CHECK(std::abs(f.tilt_deg - held.tilt_deg) <= 1.0);
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // 5. Camera latency
 // ---------------------------------------------------------------------------------------------

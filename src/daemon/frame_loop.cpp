@@ -124,6 +124,7 @@ void FrameLoop::apply(const LoopCommand& command, TimePoint now) {
         // The user's target replaces whatever is tracked or coasted, from the next frame on.
         tracker_->release();
         controller_->lost();
+        sighted_run_ = run_before_gap_ = 0;  // the new target's sightings count from its first
         if (command.kind == CommandKind::Track) tracker_->start_at({command.a, command.b});
         else tracker_->start_in(command.box);  // the request handler checked it with box_problem()
         mode_ = ControlMode::Automatic;

@@ -135,6 +135,39 @@ TEST_CASE("rays-replay starts in a box given as --init X,Y,W,H", "[tools]") {
     fs::remove_all(dir);
 }
 
+TEST_CASE("rays-replay says why a track was lost on the frame it was lost", "[tools]") {
+    // A dark disc on grey for five frames, then grey alone: the target is gone.
+    const fs::path dir = temp_dir("lost");
+    for (int k = 0; k < 10; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%03d.pgm", k);
+        std::ofstream out(dir / name, std::ios::binary);
+        out << "P5\n128 128\n255\n";
+        for (int y = 0; y < rays::kFrameSize; ++y)
+            for (int x = 0; x < rays::kFrameSize; ++x)
+                out.put(static_cast<char>(k < 5 && (x - 64) * (x - 64) + (y - 64) * (y - 64) <= 15 * 15 ? 40 : 160));
+    }
+    REQUIRE(run(std::string(RAYS_REPLAY) + " --input " + dir.string() + " --init 64,64 --out " + (dir / "run.jsonl").string()) == 0);
+    std::ifstream in(dir / "run.jsonl");
+    std::string line;
+    REQUIRE(std::getline(in, line));  // the header
+    int lost = 0, tracking = 0;
+    while (std::getline(in, line)) {
+        const auto o = nlohmann::json::parse(line);
+        if (o["state"] == "lost") {
+            ++lost;
+            REQUIRE(o.contains("lost_reason"));
+            CHECK(!o["lost_reason"].get<std::string>().empty());
+        } else {
+            CHECK(!o.contains("lost_reason"));
+            if (o["state"] == "tracking") ++tracking;
+        }
+    }
+    CHECK(tracking >= 5);
+    CHECK(lost >= 1);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("rays-replay names what is wrong with a malformed --init", "[tools]") {
     const std::string replay = std::string(RAYS_REPLAY) + " --input x --init ";
     CHECK(run(replay + "1,2,3") == 2);

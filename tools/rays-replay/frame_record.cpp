@@ -51,6 +51,8 @@ void write_frame(std::FILE* out, const Tracker& tracker, double time_us, bool cr
     } else {
         std::fprintf(out, "\"ref\":null,\"contour\":[],\"rays\":0,\"levels\":0,\"deadline_hit\":false");
     }
+    if (r.lost_reason != nullptr)
+        std::fprintf(out, ",\"lost_reason\":%s", nlohmann::json(r.lost_reason).dump().c_str());
     std::fprintf(out, ",\"time_us\":%.1f}\n", time_us);
 }
 

@@ -12,7 +12,8 @@ void write_header(std::FILE* out, int source_w, int source_h, const io::AreaScal
                   const TrackerConfig& config, long budget_us);
 
 // One frame: state, ref and contour in processing pixels (empty while not tracking), rays, levels,
-// whether the deadline cut refinement short, and the tracker's own time for the frame.
+// whether the deadline cut refinement short, why the track was lost on the frame it was, and the
+// tracker's own time for the frame.
 void write_frame(std::FILE* out, const Tracker& tracker, double time_us, bool crossings);
 
 }  // namespace rays::replay

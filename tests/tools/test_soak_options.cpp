@@ -43,3 +43,11 @@ TEST_CASE("rays-soak --scenario overrides the config's scenario only when given"
     CHECK(*o.scenario == "ramp");
     CHECK(o.frames == 100);
 }
+
+TEST_CASE("rays-soak --lockstep is a run without a budget") {
+    SoakOptions o, p;
+    REQUIRE_FALSE(parse({"--lockstep", "--scenario", "patrol"}, o));
+    CHECK(o.lockstep);
+    CHECK_FALSE(o.budget_ms);
+    CHECK(parse({"--lockstep", "--budget-ms", "5"}, p));  // a budget needs real time within the frame
+}

@@ -56,7 +56,7 @@ std::vector<SoakFrame> run_closed_loop(const SoakRun& run, std::string& error) {
     std::unique_ptr<sim::SimCamera> sim_camera = daemon::make_sim_camera(config, error);
     if (!sim_camera) return {};
 
-    SoakClock clock;
+    SoakClock clock(run.lockstep);
     std::unique_ptr<ptu::PtuDriver> driver = daemon::make_ptu_driver(config, clock, error);
     if (!driver) return {};
     daemon::ServiceNotifier notifier;

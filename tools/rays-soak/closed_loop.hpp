@@ -16,6 +16,7 @@ struct SoakRun {
     long frames = 45000;
     bool start_at_truth = true;  // the first frame's true target centre is given as a start point (as
                                  // `raysctl track X Y` would); false: the tracker detects it by itself
+    bool lockstep = false;    // time stands still within a frame (SoakClock): the same run every time
     std::string overlay_dir;  // when set, frames within the window are written there as PNG
     double overlay_from_s = 0, overlay_to_s = 0;
 };

@@ -37,22 +37,25 @@ nlohmann::json summary_json(const SoakSummary& s) {
             {"max_rate_deg_s", {s.max_abs_pan_rate_deg_s, s.max_abs_tilt_rate_deg_s}}};
 }
 
-nlohmann::json setup_json(const daemon::DaemonConfig& c, long frames) {
+nlohmann::json setup_json(const daemon::DaemonConfig& c, long frames, bool lockstep) {
     return {{"scenario", c.sim.scenario}, {"seed", c.sim.seed},        {"fps", c.sim.fps},
             {"latency_frames", c.sim.latency_frames}, {"target_motion", c.control.target_motion},
             {"fov_deg", {c.control.horizontal_fov_deg, c.control.vertical_fov_deg}},
             {"frames", frames},           {"method", c.tracker.method == TrackerMethod::Snake ? "snake" : "rays"},
-            {"law", c.control.law},       {"gain", c.control.gain},    {"budget_ms", c.loop.budget_ms},
+            {"law", c.control.law},       {"gain", c.control.gain},    {"budget_ms", c.loop.budget_ms}, {"lockstep", lockstep},
             {"rays", c.tracker.tunables.rays.count}, {"hypotheses", c.tracker.tunables.rays.hypotheses},
             {"max_velocity_deg_s", c.ptu.motion.max_velocity_deg_s},
             {"max_accel_deg_s2", c.ptu.motion.max_accel_deg_s2}};
 }
 
-void print_summary(const daemon::DaemonConfig& c, const SoakSummary& s) {
-    std::printf("rays-soak: scenario %s seed %d, %ld frames at %g fps; tracker %s, control %s gain %g/s, budget %g ms\n",
+void print_summary(const daemon::DaemonConfig& c, const SoakSummary& s, bool lockstep) {
+    char budget[48];
+    if (lockstep) std::snprintf(budget, sizeof budget, "lockstep (no budget)");
+    else std::snprintf(budget, sizeof budget, "budget %g ms", c.loop.budget_ms);
+    std::printf("rays-soak: scenario %s seed %d, %ld frames at %g fps; tracker %s, control %s gain %g/s, %s\n",
                 c.sim.scenario.c_str(), c.sim.seed, s.frames, c.sim.fps,
                 c.tracker.method == TrackerMethod::Snake ? "snake" : "rays", c.control.law.c_str(), c.control.gain,
-                c.loop.budget_ms);
+                budget);
     std::printf("  acquired at %.2f s; losses %zu, centred %.1f %%, contour on target %.1f %%\n", s.acquired_s,
                 s.losses.size(), 100 * s.centred_fraction, 100 * s.on_target_fraction);
     std::printf("  fastest target kept: %.1f deg/s (%.2f px/frame)\n", s.max_speed_deg_s, s.max_speed_px_frame);
@@ -76,7 +79,7 @@ std::optional<nlohmann::json> run_once(const SoakRun& run, const SoakOptions& op
         return std::nullopt;
     }
     summary = summarise(frames);
-    if (!options.json) print_summary(run.config, summary);
+    if (!options.json) print_summary(run.config, summary, run.lockstep);
     if (single && !options.plot_path.empty() && !write_plot(options.plot_path, frames, error)) {
         std::fprintf(stderr, "rays-soak: plot %s: %s\n", options.plot_path.c_str(), error.c_str());
         return std::nullopt;
@@ -86,7 +89,7 @@ std::optional<nlohmann::json> run_once(const SoakRun& run, const SoakOptions& op
         return std::nullopt;
     }
     nlohmann::json row = summary_json(summary);
-    row["config"] = setup_json(run.config, run.frames);
+    row["config"] = setup_json(run.config, run.frames, run.lockstep);
     return row;
 }
 
@@ -175,6 +178,7 @@ int main(int argc, char** argv) {
     }
     SoakRun run;
     run.frames = options.frames;
+    run.lockstep = options.lockstep;
     run.overlay_dir = options.overlay_dir;
     if (!run.overlay_dir.empty()) {  // made here, as rays-replay does: not a complaint per frame later
         std::error_code ec;

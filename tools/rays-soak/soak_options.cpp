@@ -32,6 +32,10 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             out.json = true;
             continue;
         }
+        if (arg == "--lockstep") {
+            out.lockstep = true;
+            continue;
+        }
         if (arg == "--help" || arg == "-h") {
             out.help = true;
             continue;
@@ -92,6 +96,7 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
     }
     const int modes = (out.gain ? 1 : 0) + (out.sweep_gains.empty() ? 0 : 1) + (out.compare_gains.empty() ? 0 : 1);
     if (modes > 1) return "--gain, --sweep-gain and --compare exclude each other";
+    if (out.lockstep && out.budget_ms) return "--lockstep has no budget: no --budget-ms";
     if (!out.compare_gains.empty() && (out.law || out.method))
         return "--compare runs both laws and both methods itself: no --law or --method";
     return std::nullopt;

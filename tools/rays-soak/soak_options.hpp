@@ -11,7 +11,7 @@ inline constexpr const char* kUsage =
     "usage: rays-soak [--frames N] [--scenario soak|soak-clutter|ramp|patrol|crowd|horizon] [--seed N] [--config FILE.ini]\n"
     "                 [--law predictive|proportional] [--method rays|snake]\n"
     "                 [--gain G | --sweep-gain G1,G2,... | --compare G1,G2,...]\n"
-    "                 [--budget-ms B] [--json] [--plot FILE.png] [--trace FILE.csv]\n"
+    "                 [--budget-ms B | --lockstep] [--json] [--plot FILE.png] [--trace FILE.csv]\n"
     "                 [--overlay DIR [--overlay-window FROM_S,TO_S]]";
 
 struct SoakOptions {
@@ -27,6 +27,7 @@ struct SoakOptions {
     // the greedy snake (with the predictive law), all on the same config; the fastest targets side by side.
     std::vector<double> compare_gains;
     std::optional<double> budget_ms;  // overrides loop.budget_ms
+    bool lockstep = false;  // time stands still within a frame: no budget, latency 0, reproducible
     bool json = false;
     std::string plot_path;
     std::string trace_path;           // one CSV row per frame

@@ -107,6 +107,28 @@ bool AppearanceModel::seed(const GreyImage& luma, const Chroma& chroma, Point ce
     return blend(targets, backgrounds, 1.0f);
 }
 
+bool AppearanceModel::seed_box(const GreyImage& luma, const Chroma& chroma, const Box& box, double pad_px) {
+    if (!chroma.present) return false;
+    pad_px = std::max(pad_px, 2.0);  // a cell at least
+    new_target_.fill(0.0f);
+    new_background_.fill(0.0f);
+    int targets = 0, backgrounds = 0;
+    const double x0 = box.x - 0.5, y0 = box.y - 0.5, x1 = box.x + box.w - 0.5, y1 = box.y + box.h - 0.5;
+    for (int j = 0; j < kChromaSize; ++j)
+        for (int i = 0; i < kChromaSize; ++i) {
+            const double x = 2.0 * i + 0.5, y = 2.0 * j + 0.5;
+            if (x >= x0 && x <= x1 && y >= y0 && y <= y1) {
+                new_target_[bin(luma, chroma, i, j)] += 1.0f;
+                ++targets;
+            } else if (x >= x0 - pad_px && x <= x1 + pad_px && y >= y0 - pad_px && y <= y1 + pad_px) {
+                new_background_[bin(luma, chroma, i, j)] += 1.0f;
+                ++backgrounds;
+            }
+        }
+    valid_ = false;
+    return blend(targets, backgrounds, 1.0f);
+}
+
 bool AppearanceModel::blend(int targets, int backgrounds, float rate) {
     if (targets < kLeastCells || backgrounds < kLeastCells) return false;
     const float w = valid_ ? std::clamp(rate, 0.0f, 1.0f) : 1.0f;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 
+#include "core/box.hpp"
 #include "core/contour.hpp"
 #include "core/image.hpp"
 
@@ -62,6 +63,11 @@ public:
     bool seed(const GreyImage& luma, const Chroma& chroma, Point centre, double inside_px, double ring_from_px,
               double ring_to_px);
 
+    // A first guess from a box round the target (Staple's): the cells inside the box are the target,
+    // those in a band `pad_px` wide round it the background. What the box holds beside the target
+    // (its corners, a gap under an arm) is as common round it, so its colours come out near even.
+    // Replaces the model; false for a mono frame or too few cells.
+    bool seed_box(const GreyImage& luma, const Chroma& chroma, const Box& box, double pad_px);
     // The log-odds of every cell of the frame. Call only while valid().
     void likelihood(const GreyImage& luma, const Chroma& chroma, LikelihoodMap& out) const;
 

@@ -28,6 +28,7 @@ constexpr float kColourRate = 0.1f;      // weight of the newest contour in the 
 constexpr double kSeedInside = 0.3;      // of a new target's radius: surely the target round its start point
 constexpr double kSeedRingFrom = 2.0;    // ... and from this many radii ...
 constexpr double kSeedRingTo = 3.0;      // ... to this many, mostly not
+constexpr double kBoxBand = 0.15;        // of a box's longer side: the band round it whose colours are background
 constexpr float kFilterRate = 0.02f;     // weight of the newest frame in the correlation filter (CSRT: 0.02)
 constexpr double kConfidentPsr = 5.0;    // a filter match this clear of its sidelobe says where the target is
 constexpr int kSearchWindows = 4;       // windows of the whole-frame search per frame (each a filter locate)
@@ -184,9 +185,12 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     model_.reset();
     person_start_ = true;
     model_.seed_inside(smoothed_, box);
-    // Well inside the box is the target; a ring round the box, from its corners out, is not.
-    const double half_diagonal = 0.5 * std::hypot(box.w, box.h);
-    seed_colours(box.centre(), kSeedInside * std::min(box.w, box.h), half_diagonal, 1.5 * half_diagonal);
+    // The box holds the target, a band round it does not: what the box holds beside the target
+    // (its corners) is as common round it, so its colours come out near even (Staple's seed).
+    const bool seeded = tunables_.rays.appearance_weight > 0.0 &&
+                        appearance_.seed_box(*frame_, *chroma_, box, kBoxBand * std::max(box.w, box.h));
+    if (seeded) look_with_colours();
+    else forget_colours();
     return first_contour(box.centre(), StartFrom::Person, false, deadline);
 }
 

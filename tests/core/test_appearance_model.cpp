@@ -127,6 +127,36 @@ TEST_CASE("A point's seed tells the target's colours from those of a ring round 
     CHECK(mean_log_odds(*map, scene.centre(0), ColourScene::kRadius + 2.0, 40.0) < -1.0);
 }
 
+TEST_CASE("A box's seed learns the box as the target and a band round it as the background", "[appearance]") {
+    const ColourScene scene;
+    auto f = std::make_unique<Frame>();
+    scene.render(0, f->luma, f->chroma, f->mask);
+    const Point c = scene.centre(0);
+    const double r = ColourScene::kRadius;
+    const rays::Box box{c.x - r, c.y - r, 2.0 * r + 1.0, 2.0 * r + 1.0};  // the disc's bounding box
+    AppearanceModel model;
+    REQUIRE(model.seed_box(f->luma, f->chroma, box, 6.0));
+    auto map = std::make_unique<LikelihoodMap>();
+    model.likelihood(f->luma, f->chroma, *map);
+    CHECK(mean_log_odds(*map, c, 0.0, r - 2.0) > 2.0);
+    CHECK(mean_log_odds(*map, c, r * std::numbers::sqrt2 + 2.0, 40.0) < -1.0);  // beyond the box's corners
+    // The box's corners hold background, and so does the band: not the target, though inside the box.
+    double corners = 0.0;
+    int n = 0;
+    for (int j = 0; j < LikelihoodMap::kSize; ++j)
+        for (int i = 0; i < LikelihoodMap::kSize; ++i) {
+            const double x = 2.0 * i + 0.5, y = 2.0 * j + 0.5;
+            const bool in_box = x >= box.x + 1.0 && x <= box.x + box.w - 2.0 && y >= box.y + 1.0 && y <= box.y + box.h - 2.0;
+            if (!in_box || std::hypot(x - c.x, y - c.y) < r + 2.0) continue;
+            corners += map->cell(i, j);
+            ++n;
+        }
+    REQUIRE(n > 0);
+    CHECK(corners / n < 0.0);
+    f->chroma.present = false;  // a mono source
+    CHECK_FALSE(model.seed_box(f->luma, f->chroma, box, 6.0));
+}
+
 TEST_CASE("Without colour, or from too little, the model learns nothing", "[appearance]") {
     const ColourScene scene;
     auto f = std::make_unique<Frame>();

@@ -86,19 +86,19 @@ bool AppearanceModel::learn(const GreyImage& luma, const Chroma& chroma, const C
     return blend(targets, backgrounds, rate);
 }
 
-bool AppearanceModel::seed(const GreyImage& luma, const Chroma& chroma, Point centre, double inside_px,
-                           double ring_from_px, double ring_to_px) {
+template <typename Place>
+bool AppearanceModel::seed_where(const GreyImage& luma, const Chroma& chroma, Place place) {
     if (!chroma.present) return false;
     new_target_.fill(0.0f);
     new_background_.fill(0.0f);
     int targets = 0, backgrounds = 0;
     for (int j = 0; j < kChromaSize; ++j)
         for (int i = 0; i < kChromaSize; ++i) {
-            const double d = std::hypot(2.0 * i + 0.5 - centre.x, 2.0 * j + 0.5 - centre.y);
-            if (d <= inside_px) {
+            const int where = place(2.0 * i + 0.5, 2.0 * j + 0.5);  // the cell's centre
+            if (where > 0) {
                 new_target_[bin(luma, chroma, i, j)] += 1.0f;
                 ++targets;
-            } else if (d >= ring_from_px && d <= ring_to_px) {
+            } else if (where < 0) {
                 new_background_[bin(luma, chroma, i, j)] += 1.0f;
                 ++backgrounds;
             }
@@ -107,26 +107,21 @@ bool AppearanceModel::seed(const GreyImage& luma, const Chroma& chroma, Point ce
     return blend(targets, backgrounds, 1.0f);
 }
 
+bool AppearanceModel::seed(const GreyImage& luma, const Chroma& chroma, Point centre, double inside_px,
+                           double ring_from_px, double ring_to_px) {
+    return seed_where(luma, chroma, [&](double x, double y) {
+        const double d = std::hypot(x - centre.x, y - centre.y);
+        return d <= inside_px ? 1 : d >= ring_from_px && d <= ring_to_px ? -1 : 0;
+    });
+}
+
 bool AppearanceModel::seed_box(const GreyImage& luma, const Chroma& chroma, const Box& box, double pad_px) {
-    if (!chroma.present) return false;
     pad_px = std::max(pad_px, 2.0);  // a cell at least
-    new_target_.fill(0.0f);
-    new_background_.fill(0.0f);
-    int targets = 0, backgrounds = 0;
     const double x0 = box.x - 0.5, y0 = box.y - 0.5, x1 = box.x + box.w - 0.5, y1 = box.y + box.h - 0.5;
-    for (int j = 0; j < kChromaSize; ++j)
-        for (int i = 0; i < kChromaSize; ++i) {
-            const double x = 2.0 * i + 0.5, y = 2.0 * j + 0.5;
-            if (x >= x0 && x <= x1 && y >= y0 && y <= y1) {
-                new_target_[bin(luma, chroma, i, j)] += 1.0f;
-                ++targets;
-            } else if (x >= x0 - pad_px && x <= x1 + pad_px && y >= y0 - pad_px && y <= y1 + pad_px) {
-                new_background_[bin(luma, chroma, i, j)] += 1.0f;
-                ++backgrounds;
-            }
-        }
-    valid_ = false;
-    return blend(targets, backgrounds, 1.0f);
+    return seed_where(luma, chroma, [&](double x, double y) {
+        if (x >= x0 && x <= x1 && y >= y0 && y <= y1) return 1;
+        return x >= x0 - pad_px && x <= x1 + pad_px && y >= y0 - pad_px && y <= y1 + pad_px ? -1 : 0;
+    });
 }
 
 bool AppearanceModel::blend(int targets, int backgrounds, float rate) {

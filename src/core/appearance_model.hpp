@@ -73,6 +73,10 @@ public:
 
 private:
     static int bin(const GreyImage& luma, const Chroma& chroma, int i, int j);
+    // Replaces the model with the cells `place(x, y)` (a cell's centre, processing pixels) calls the
+    // target (> 0) against those it calls the background (< 0).
+    template <typename Place>
+    bool seed_where(const GreyImage& luma, const Chroma& chroma, Place place);
     // Takes new_target_ and new_background_ (counts) into the model at `rate`.
     bool blend(int targets, int backgrounds, float rate);
     // Marks the cells whose centres lie inside the contour, within rows j0 … j1 (even-odd rule).

@@ -109,9 +109,7 @@ void Tracker::look_with_colours() {
     rays_.use_likelihood(colours ? &likelihood_ : nullptr);
 }
 
-void Tracker::seed_colours(Point m, double inside_px, double ring_from_px, double ring_to_px) {
-    const bool seeded = tunables_.rays.appearance_weight > 0.0 &&
-                        appearance_.seed(*frame_, *chroma_, m, inside_px, ring_from_px, ring_to_px);
+void Tracker::use_seeded_colours(bool seeded) {
     if (seeded) look_with_colours();
     else forget_colours();
 }
@@ -172,7 +170,9 @@ bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_targ
         // Round m is the target, further out mostly not: where that tells colours apart, the first
         // rays find where the target's colours end even where grey shows no edge there.
         radius = std::max(radius, kStartRadiusPx);
-        seed_colours(m, kSeedInside * radius, kSeedRingFrom * radius, kSeedRingTo * radius);
+        use_seeded_colours(tunables_.rays.appearance_weight > 0.0 &&
+                           appearance_.seed(*frame_, *chroma_, m, kSeedInside * radius, kSeedRingFrom * radius,
+                                            kSeedRingTo * radius));
     }
     return first_contour(m, from, same_target, deadline);
 }
@@ -187,10 +187,8 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     model_.seed_inside(smoothed_, box);
     // The box holds the target, a band round it does not: what the box holds beside the target
     // (its corners) is as common round it, so its colours come out near even (Staple's seed).
-    const bool seeded = tunables_.rays.appearance_weight > 0.0 &&
-                        appearance_.seed_box(*frame_, *chroma_, box, kBoxBand * std::max(box.w, box.h));
-    if (seeded) look_with_colours();
-    else forget_colours();
+    use_seeded_colours(tunables_.rays.appearance_weight > 0.0 &&
+                       appearance_.seed_box(*frame_, *chroma_, box, kBoxBand * std::max(box.w, box.h)));
     return first_contour(box.centre(), StartFrom::Person, false, deadline);
 }
 

@@ -93,8 +93,9 @@ private:
     // The rays look with the learned colours on this frame (the likelihood map), or without when
     // there are none.
     void look_with_colours();
-    // A new target's first guess of its colours (AppearanceModel::seed), looked with at once.
-    void seed_colours(Point m, double inside_px, double ring_from_px, double ring_to_px);
+    // After a new target's first guess of its colours (AppearanceModel::seed or seed_box): looked
+    // with at once where it was seeded, else none.
+    void use_seeded_colours(bool seeded);
     void forget_colours();
     // Learns the correlation filter on this frame's contour at `rate` (1: a new target's first),
     // centred on its centroid or on `at`; `located`: from the window the filter looked in this frame.

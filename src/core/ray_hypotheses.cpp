@@ -54,10 +54,11 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
     const float x_first = static_cast<float>(m.x) + lambda_min_ * cx, y_first = static_cast<float>(m.y) + lambda_min_ * sy;
     const float dx = step_ * cx, dy = step_ * sy;
     float x = x_first, y = y_first;
+    float sum = 0.0f, sum_sq = 0.0f, log_odds = 0.0f;  // the running sums, in registers
     prefix_[0] = prefix_sq_[0] = log_odds_sum_[0] = 0.0f;
     for (int j = 0; j < n; ++j, x += dx, y += dy) {
         // With colour: the running sum of the log-odds the colour split is found from (below).
-        if (likelihood != nullptr) log_odds_sum_[j + 1] = log_odds_sum_[j] + likelihood->at(x, y);
+        if (likelihood != nullptr) log_odds_sum_[j + 1] = log_odds += likelihood->at(x, y);
         const int x0 = std::clamp(static_cast<int>(x), 0, kFrameSize - 2);
         const int y0 = std::clamp(static_cast<int>(y), 0, kFrameSize - 2);
         const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
@@ -67,8 +68,8 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
         const float bottom = r1[0] + fx * (r1[1] - r1[0]);
         const float v = top + fy * (bottom - top);
         profile_[j] = v;
-        prefix_[j + 1] = prefix_[j] + v;  // running sums make the region term O(1) per hypothesis
-        prefix_sq_[j + 1] = prefix_sq_[j] + v * v;
+        prefix_[j + 1] = sum += v;  // running sums make the region term O(1) per hypothesis
+        prefix_sq_[j + 1] = sum_sq += v * v;
     }
     lambda_end = lambda_min_ + static_cast<float>(std::max(0, n - 1)) * step_;
     shot_samples_ = n;
@@ -90,13 +91,16 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
         return at(std::max(0, j - fg_reach)) - at(std::min(n - 1, j + fg_reach));
     };
     const int first = std::max(1, static_cast<int>(std::ceil((lambda_from - lambda_min_) / step_ - 1e-6f)));
+    // Without branches: whether a sample is a maximum is as good as random, a branch on it mispredicted.
     for (int j = first; j < n - 1; ++j) {
         const float a = std::abs(grad_[j]);
-        if (a >= floor_ && a >= std::abs(grad_[j - 1]) && a > std::abs(grad_[j + 1])) {
-            foreground_step_[j] = foreground != nullptr ? leaves_foreground(j) : 0.0f;
-            rank_[j] = a * (1.0f + std::max(0.0f, foreground_step_[j]));
-            candidates_[nc++] = j;
-        }
+        candidates_[nc] = j;
+        nc += static_cast<int>((a >= floor_) & (a >= std::abs(grad_[j - 1])) & (a > std::abs(grad_[j + 1])));
+    }
+    for (int ci = 0; ci < nc; ++ci) {
+        const int j = candidates_[ci];
+        foreground_step_[j] = foreground != nullptr ? leaves_foreground(j) : 0.0f;
+        rank_[j] = std::abs(grad_[j]) * (1.0f + std::max(0.0f, foreground_step_[j]));
     }
     // eq. 13: hypotheses in order of decreasing |∂ρ/∂λ|² (an edge out of the foreground counting up
     // to twice); eq. 15's wish for well-separated hypotheses is kept as a minimum separation between them.
@@ -117,8 +121,12 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
     int split = -1;
     if (likelihood != nullptr) {
         split = first;  // boundary b: between samples b − 1 and b
-        for (int b = first; b <= n; ++b)
-            if (log_odds_sum_[b] > log_odds_sum_[split]) split = b;
+        float most = log_odds_sum_[first];
+        for (int b = first; b <= n; ++b) {
+            const bool more = log_odds_sum_[b] > most;
+            most = more ? log_odds_sum_[b] : most;
+            split = more ? b : split;
+        }
         const auto half_steps = [&](int j) { return std::abs(2 * j + 1 - 2 * split); };  // edge j to the split
         int near = -1;
         for (int ci = 0; ci < nc; ++ci) {
@@ -144,7 +152,7 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
         const float offset = denom < 0.0f ? std::clamp(0.5f * (a - cc) / denom, -0.5f, 0.5f) : 0.0f;
         const float lam = lambda_min_ + (static_cast<float>(j) + offset) * step_;
         bool separated = true;
-        for (int h = 0; h < kept; ++h) separated = separated && std::abs(out[h].lambda - lam) >= separation_;
+        for (int h = 0; h < kept; ++h) separated &= std::abs(out[h].lambda - lam) >= separation_;
         if (!separated) continue;
         Hypothesis& hyp = out[kept++];
         hyp.lambda = lam;

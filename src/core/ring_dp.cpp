@@ -21,13 +21,13 @@ RingDp::RingDp(int max_nodes, int max_states)
       gap_(max_nodes),
       states_(max_nodes),
       capped_(max_nodes),
-      jump_(kInf),
+      caps_{kInf, kInf},
       value_(static_cast<std::size_t>(max_states) * max_states),
       next_value_(value_.size()),
       back_(static_cast<std::size_t>(max_nodes) * max_states * max_states),
       scratch_(max_nodes) {}
 
-void RingDp::set_jump_cost(double kappa) { jump_ = kappa > 0 ? static_cast<float>(kappa) : kInf; }
+void RingDp::set_jump_cost(double kappa) { caps_[1] = kappa > 0 ? static_cast<float>(kappa) : kInf; }
 
 void RingDp::reset(int nodes) { nodes_ = std::clamp(nodes, 0, max_nodes_); }
 

@@ -18,6 +18,7 @@
 // energy never rises. The result is a consistent closed contour; its distance from the true optimum
 // is bounded by tests/core/test_ring_dp.cpp against brute force, with and without the jump cost.
 #pragma once
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -55,13 +56,14 @@ private:
     float lam(int node, int s) const { return lam_[node * max_states_ + s]; }
     float unary(int node, int s) const { return unary_[node * max_states_ + s]; }
     // The most a smoothness term may charge as far as state s of `node` is concerned.
-    float cap(int node, int s) const { return s < capped_[node] ? jump_ : std::numeric_limits<float>::infinity(); }
+    // A table, not a branch: which states are edges is as good as random to a branch predictor.
+    float cap(int node, int s) const { return caps_[s < capped_[node]]; }
 
     int max_nodes_, max_states_;
     int nodes_ = 0;
     std::vector<float> lam_, unary_, gap_;
     std::vector<int> states_, capped_;
-    float jump_;
+    std::array<float, 2> caps_;  // what a term may charge: [0] a state that is not an edge (∞), [1] an edge (κ)
     std::vector<float> value_, next_value_;  // V(s_{i−1}, s_i), S² per step
     std::vector<unsigned char> back_;       // argmin s_{i−2} for each node and pair, M·S²
     std::vector<int> scratch_;

@@ -25,6 +25,9 @@ struct FrameResult {
     Point predicted;               // where m was expected this frame
     Detection detection;           // the motion detector's output, on frames it ran
     const char* lost_reason = nullptr;
+    // The track just dropped was not on the target (it stood on background while the target moved
+    // on): where it was is no place to look for the target again.
+    bool off_target = false;
 };
 
 class ContourTracker {

@@ -224,6 +224,10 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         psr_tracked_ = 0.0;
     }
     model_.learn(contour_, scratch_);
+    // A person's target as it looked at the start: the learned looks drift with the contour, this does not.
+    if (from == StartFrom::Person && !same_target)
+        start_grey_ = mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0);
+    if (from == StartFrom::Detector) start_grey_ = 0.0;
     remember_contour();
     return true;
 }
@@ -283,11 +287,12 @@ void Tracker::track(TimePoint deadline) {
     if (confident) v = {match_.at.x - last.x, match_.at.y - last.y};
     // Where a confident filter match says the target is, once: a measurement, not a guess. Without
     // one, constant velocity first; when that contour fails the attention check (the target turned
-    // or stopped), the target held still, then reversed — a turn must not cost the track. An outside
-    // prediction (predict_next) goes first, with the image's own constant velocity as the fallback.
+    // or stopped), the target held still, then reversed — a turn must not cost the track. Without a
+    // confident match, an outside prediction (predict_next: the unit's own motion taken out) goes
+    // first, with the image's own constant velocity as the fallback.
     Point steps[] = {v, {0.0, 0.0}, {-v.x, -v.y}};
     int tries = !confident && std::hypot(v.x, v.y) >= kRetryMinSpeedPx ? 3 : 1;
-    if (external_prediction_) {
+    if (external_prediction_ && !confident) {
         steps[2] = steps[0];
         steps[0] = {external_prediction_->x - last.x, external_prediction_->y - last.y};
         steps[1] = {0.0, 0.0};
@@ -369,6 +374,11 @@ bool Tracker::looks_like_target() const {
 
 bool Tracker::knows_target() const { return person_start_ || rim_frames_ >= kKnownFrames; }
 
+bool Tracker::as_grey_as_at_start() const {
+    const double grey = mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0);
+    return start_grey_ > 0.0 && std::abs(grey - start_grey_) <= kReacquireGreyTolerance;
+}
+
 bool Tracker::look_again(TimePoint deadline) {
     if (!filter_.valid() || !knows_target()) return false;
     const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
@@ -438,9 +448,10 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     // Frame differencing may start a track on the background beside the moving object (the part it
     // just uncovered, or a patch that looks alike), and a track may slide off a mover onto background
     // that looks alike and stay there while the mover walks on. Such a track stands still. While a
-    // track stands still and the camera too, the detector goes on looking: motion found away from the
-    // contour frame after frame (and more often than in it) means the track is not on the mover; it is
-    // dropped, and detection starts again. Not while the camera turns: that moves everything.
+    // track stands still and the view too (as the frames show it: the unit's small corrections do not
+    // move it), the detector goes on looking: motion found away from the contour frame after frame
+    // (and more often than in it) means the track is not on the mover; it is dropped, and detection
+    // starts again. Not while the view turns: that moves everything.
     if (!has_previous_) return true;
     const Point c = contour_.centroid;
     if (still_frames_ < 0 || std::hypot(c.x - still_at_.x, c.y - still_at_.y) >= kStillRadiusPx) {
@@ -452,7 +463,7 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     }
     if (++still_frames_ % kWatchWindowFrames == 0) motion_inside_ = motion_outside_ = 0;
     // A start point from outside is the target, moving or not, until it has moved.
-    if (still_frames_ < kStillFrames || !watched_ || !detection_allowed_ || !view_motion_.since_previous().still) return true;
+    if (still_frames_ < kStillFrames || !watched_ || !view_motion_.since_previous().still) return true;
     result_.detection = detector_.detect(previous_, frame, tunables_.detect);
     const Detection& d = result_.detection;
     if (!d.found) return true;
@@ -470,6 +481,7 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
 const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma, TimePoint deadline) {
     ++result_.frame;
     result_.lost_reason = nullptr;
+    result_.off_target = false;
     result_.detection = {};
     frame_ = &frame;
     chroma_ = &chroma;
@@ -497,16 +509,18 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
 
     if (result_.state == TrackState::Tracking) {
         track(deadline);
-        // A person's target that the filter still finds is the target, standing still or not.
-        const bool confirmed = person_start_ && match_.psr >= kConfidentPsr;
-        if (result_.state == TrackState::Tracking && !confirmed && !watch_still_track(frame)) {
+        // A person's target that the filter still finds, and that is as grey as it was at the start,
+        // is the target, standing still or not.
+        const bool confirmed = person_start_ && match_.psr >= kConfidentPsr && as_grey_as_at_start();
+        if (result_.state == TrackState::Tracking && !watch_still_track(frame) && !confirmed) {
             declare_lost("the track stood still while motion went on away from it");
+            result_.off_target = true;
             filter_.reset();  // it learned the looks of something beside the mover: not to be looked for again
         }
     } else if (result_.state == TrackState::Detecting) {
         bool found = false;
         still_frames_ = -1;
-        watched_ = !start_point_;
+        watched_ = !start_point_ || reacquire_;  // a person's start is the target until it moves; a guess is not
         if (start_point_) {
             // Its whole size: the last contour may have been a sliver beside an occluder.
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);

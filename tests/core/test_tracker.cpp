@@ -340,6 +340,68 @@ TEST_CASE("Tracker keeps a start point given from outside on something still whi
 
 namespace {
 
+// A still camera over a lightly textured plain: a person starts the track on dark disc A (grey 60),
+// which walks right along y = 36 at 1.5 px/frame. At frame kSwap a still disc as big and as grey
+// stands where A is, and A walks on along y = 96 from x = 20; over the next 20 frames the still disc
+// turns to grey `left_grey`: the track is left on something that stands still where the target was
+// and comes to look unlike it, as a contour that slid onto background does (the learned looks
+// follow it there).
+struct LeftBehind {
+    explicit LeftBehind(double left_grey_level) : left_grey(left_grey_level) {}
+    static constexpr int kSwap = 30;
+    double left_grey;
+    SteadyClock clock;
+    Tracker tracker{TrackerConfig{}, clock};
+    rays::GreyImage image;
+
+    double a_x(int index) const { return index < kSwap ? 20.0 + 1.5 * index : 20.0 + 1.5 * (index - kSwap); }
+    double a_y(int index) const { return index < kSwap ? 36.0 : 96.0; }
+    double left_x() const { return 20.0 + 1.5 * kSwap; }
+
+    TrackState step(int index) {
+        for (int y = 0; y < rays::kFrameSize; ++y)
+            for (int x = 0; x < rays::kFrameSize; ++x) {
+                double grey = 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
+                if (index >= kSwap && std::hypot(x - left_x(), y - 36.0) <= 9.0)
+                    grey = 60.0 + (left_grey - 60.0) * std::min(1.0, (index - kSwap) / 20.0);
+                if (std::hypot(x - a_x(index), y - a_y(index)) <= 9.0) grey = 60.0;
+                image.at(x, y) = static_cast<std::uint8_t>(grey);
+            }
+        if (index == 0) tracker.start_at({a_x(0), a_y(0)});
+        return tracker.process(image, rays::TimePoint::max()).state;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("Tracker drops a person's track left on something unlike the target while the target moves on", "[tracker]") {
+    LeftBehind run(110.0);
+    int i = 0;
+    for (; i < LeftBehind::kSwap; ++i) run.step(i);
+    const Point c = run.tracker.contour().centroid;
+    REQUIRE(run.tracker.state() == TrackState::Tracking);
+    REQUIRE(std::hypot(c.x - run.a_x(i - 1), c.y - 36.0) < 2.0);
+    int dropped_at = -1;
+    for (; i < 80 && dropped_at < 0; ++i)
+        if (run.step(i) == TrackState::Lost) dropped_at = i;
+    INFO("dropped at frame " << dropped_at);
+    REQUIRE(dropped_at > 0);  // the filter finds the grey disc, but it is not as grey as the person's target
+    CHECK(std::string(run.tracker.result().lost_reason).find("stood still") != std::string::npos);
+    CHECK(run.tracker.result().off_target);
+}
+
+TEST_CASE("Tracker keeps a person's track on something as grey as the target was, standing still while another moves", "[tracker]") {
+    LeftBehind run(60.0);  // what stands where the target was looks like it: the target, stopped
+    for (int i = 0; i < 90; ++i) {
+        INFO("frame " << i);
+        CHECK(run.step(i) == TrackState::Tracking);
+    }
+    const Point c = run.tracker.contour().centroid;
+    CHECK(std::hypot(c.x - run.left_x(), c.y - 36.0) < 2.0);
+}
+
+namespace {
+
 // A still camera over a textured plain: a textured dark ellipse (semi-axes 16 × 11) walking at `speed`
 // px/frame along y = 64, its texture moving with it; `alike`: a still rectangle that looks just like
 // it, touching its right end in frame 0; `mark`: a bright disc of radius 3 on the target's middle.

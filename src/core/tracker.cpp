@@ -225,8 +225,7 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     }
     model_.learn(contour_, scratch_);
     // A person's target as it looked at the start: the learned looks drift with the contour, this does not.
-    if (from == StartFrom::Person && !same_target)
-        start_grey_ = mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0);
+    if (from == StartFrom::Person && !same_target) start_grey_ = inside_grey_share();
     if (from == StartFrom::Detector) start_grey_ = 0.0;
     remember_contour();
     return true;
@@ -374,9 +373,10 @@ bool Tracker::looks_like_target() const {
 
 bool Tracker::knows_target() const { return person_start_ || rim_frames_ >= kKnownFrames; }
 
+double Tracker::inside_grey_share() const { return mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0); }
+
 bool Tracker::as_grey_as_at_start() const {
-    const double grey = mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0);
-    return start_grey_ > 0.0 && std::abs(grey - start_grey_) <= kReacquireGreyTolerance;
+    return start_grey_ > 0.0 && std::abs(inside_grey_share() - start_grey_) <= kReacquireGreyTolerance;
 }
 
 bool Tracker::look_again(TimePoint deadline) {

@@ -78,6 +78,8 @@ private:
     // Whether this frame's contour encloses about the grey a person's target had at its start: what
     // the learned looks cannot tell once they have drifted onto background with the contour.
     bool as_grey_as_at_start() const;
+    // This frame's contour's inside grey over the frame's mean grey.
+    double inside_grey_share() const;
     void track(TimePoint deadline);
     // The attention check of this frame's contour, and, where the filter is `confident`, whether the
     // contour is still where the filter finds the target: nullptr, or why it is not the target.

@@ -216,8 +216,8 @@ void FrameLoop::track_frame(TimePoint now) {
         sighted_run_ = 0;
     }
     if (!result.has_contour && controller_->has_target() &&
-        (result.off_target || !controller_->expected_pixel(at_capture) || !controller_->can_coast() || run_before_gap_ < kCoastRun ||
-         at_capture.t_s - last_sighting_s_ > tunables_.control.coast_s)) {
+        (result.off_target || !controller_->expected_pixel(at_capture) || !controller_->can_coast() ||
+         run_before_gap_ < kCoastRun || at_capture.t_s - last_sighting_s_ > tunables_.control.coast_s)) {
         // A target the controller cannot predict, or not trust to (its estimate not settled, or the
         // target seen only briefly before this gap), is lost at once; a predicted one after coast_s.
         // One the tracker found it was not on (background) is lost at once too: the controller

@@ -259,7 +259,7 @@ void ActiveRays::write_contour(Point m, Contour& out) const {
 
 void ActiveRays::extract(const FloatImage& image, Point m0, PolarPrior& prior, bool use_temporal,
                          const TargetModel& model, const Clock& clock, TimePoint deadline, Contour& out,
-                         int max_level) {
+                         int max_level, bool m_moves) {
     const int n = table_.count();
     jumps_ = false;  // m converges on eq. 9 whole: a coarse ray's jump would pull it off the target
     rim_contrast_ = model.valid ? std::max(model.rim_contrast, 2.0f * static_cast<float>(t_.edge_floor))
@@ -274,7 +274,8 @@ void ActiveRays::extract(const FloatImage& image, Point m0, PolarPrior& prior, b
     out.iterations = 0;
     TimePoint t0 = clock.now();
     double ray_cost_ns = 0, node_cost_ns = 0;  // measured costs, for predicting what still fits
-    for (int it = 0; it < t_.centroid_iterations; ++it) {
+    const int iterations = m_moves ? t_.centroid_iterations : 1;
+    for (int it = 0; it < iterations; ++it) {
         prior.resample(table_, m, t_.lambda_min_px, t_.lambda_max_px);
         std::fill(active_.begin(), active_.begin() + n, 0);
         const TimePoint a = clock.now();
@@ -291,7 +292,7 @@ void ActiveRays::extract(const FloatImage& image, Point m0, PolarPrior& prior, b
         // toward the side where the contour is far from m, the area centre does not.
         const Point centre = out.centroid;
         const double moved = std::hypot(centre.x - m.x, centre.y - m.y);
-        if (moved < t_.centroid_tol_px || it + 1 == t_.centroid_iterations) break;
+        if (moved < t_.centroid_tol_px || it + 1 == iterations) break;
         const TimePoint now = clock.now();
         if (now + (now - t0) / (it + 1) > deadline) {
             out.deadline_hit = true;

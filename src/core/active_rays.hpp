@@ -30,9 +30,10 @@ public:
     // carries the learned polarity, appearance and rim contrast (ignored while !model.valid).
     // Refinement stops before `deadline` (read through `clock`); the coarse contour of the first
     // centroid iteration is always computed. `max_level` ≥ 0 stops refinement after that level
-    // (for measuring the any-time curve). No allocation.
+    // (for measuring the any-time curve). `m_moves` false holds m where it is (no eq. 11 iterations:
+    // the contour is the one seen from m, which it encloses). No allocation.
     void extract(const FloatImage& image, Point m, PolarPrior& prior, bool use_temporal, const TargetModel& model,
-                 const Clock& clock, TimePoint deadline, Contour& out, int max_level = -1);
+                 const Clock& clock, TimePoint deadline, Contour& out, int max_level = -1, bool m_moves = true);
     // The last extraction's final contour again, with eq. 9 whole: a tracking contour's smoothness is
     // truncated at rays.jump_cost, which may let part of it out onto clutter. The same rays and
     // hypotheses: only the ring DP runs again (what a second extraction without the truncation would

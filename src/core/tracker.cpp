@@ -207,6 +207,12 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
         reason = attention_.check(contour_, contour_.centroid, limits);
     }
+    // A person's point is on the target: a contour that has moved off it is of something beside it;
+    // the contour seen from the point itself is the target's.
+    if (from == StartFrom::Person && !contour_contains(contour_, m)) {
+        rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_, -1, false);
+        reason = attention_.check(contour_, contour_.centroid, limits);
+    }
     if (reason == nullptr && from == StartFrom::Filter && !looks_like_target()) reason = "not as grey as the target";
     if (reason != nullptr) return false;
     if (!same_target) {

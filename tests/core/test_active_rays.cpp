@@ -162,6 +162,24 @@ TEST_CASE("ActiveRays moves m to the centroid from an off-centre start", "[activ
     }
 }
 
+TEST_CASE("ActiveRays holds m where it is told to: the contour seen from an off-centre point", "[active_rays]") {
+    auto frame = test_disc();
+    Extraction x;
+    x.prior.set_circle(10.0);
+    x.smoother.set_sigma(x.tunables.sigma_px);
+    x.smoother.smooth(frame->image, x.smoothed);
+    const Point m{kCx + 7, kCy - 3};
+    x.rays.extract(x.smoothed, m, x.prior, false, TargetModel{}, x.steady, TimePoint::max(), x.contour, -1, false);
+    const Contour& c = x.contour;
+    INFO("IoU " << iou(c, *frame) << ", centroid error " << centroid_error(c, *frame));
+    CHECK(c.iterations == 1);
+    CHECK(c.ref.x == m.x);  // not moved toward the disc's centre (eq. 11 not applied)
+    CHECK(c.ref.y == m.y);
+    CHECK(rays::contour_contains(c, m));
+    CHECK(centroid_error(c, *frame) < 1.0);  // the same disc, seen from elsewhere inside it
+    CHECK(iou(c, *frame) >= 0.9);
+}
+
 namespace {
 
 // True when both target and background pixels lie within 2 px of the point λ along the ray from ref.

@@ -211,6 +211,7 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     // the contour seen from the point itself is the target's.
     if (from == StartFrom::Person && !contour_contains(contour_, m)) {
         rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_, -1, false);
+        attention_.reset();  // the contour it replaces is no previous frame's
         reason = attention_.check(contour_, contour_.centroid, limits);
     }
     if (reason == nullptr && from == StartFrom::Filter && !looks_like_target()) reason = "not as grey as the target";

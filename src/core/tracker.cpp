@@ -247,6 +247,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     const double area = tracked_area_;
     const WholeArea whole = whole_area_;
     const double whole_grey = whole_grey_;
+    const Point seen = last_seen_;
     if (!kept.valid) return false;
     const bool found = begin_track(m, radius, StartFrom::Prediction, false, deadline);
     auto mean_inside = [](const TargetModel& model) {
@@ -270,6 +271,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
         appearance_ = kept_colours;
         look_with_colours();
         tracked_area_ = area;
+        last_seen_ = seen;  // where the filter looks for it again
     }
     return alike;
 }

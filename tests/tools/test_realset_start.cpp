@@ -12,9 +12,10 @@
 
 TEST_CASE("A point near a pedestrian's rim starts a contour round that point, on the pedestrian", "[realset]") {
     // otb-crossing, frame 0: the pedestrian is 6 px wide (init_box 72.4–78.4 × 80.0–106.7); the
-    // point is 1.6 px inside the right rim, on the legs. The first contour from there takes in the
-    // road beside the legs, eq. 11 moves m onto the road, and the contour ends 27 px away, round
-    // the road (that start's track stays there); the contour seen from the point is the pedestrian's.
+    // point is 2.4 px inside the right rim, on the legs. The first contour from there takes in the
+    // road under the feet, eq. 11 moves m onto the road, and the contour ends 14 px below the point,
+    // round the road (that start's track stays there: centre in box 0.0 over the sequence, 0.85
+    // from the contour seen from the point); the contour seen from the point is the pedestrian's.
     const auto dir = rays::test::shared_dir_or_skip("the real-footage start test") / "realset" / "otb-crossing";
     auto opened = rays::io::open_frames((dir / "seq.y4m").string());
     REQUIRE(opened.reader);

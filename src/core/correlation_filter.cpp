@@ -61,6 +61,14 @@ CorrelationFilter::CorrelationFilter() {
     inverse_real(scratch, response_);  // ... the inverse's plans too
 }
 
+void CorrelationFilter::copy_learned(const CorrelationFilter& other) {
+    numerator_ = other.numerator_;
+    denominator_ = other.denominator_;
+    colour_ = other.colour_;
+    valid_ = other.valid_;
+    window_px_ = other.window_px_;
+}
+
 void CorrelationFilter::fft2(Spectrum& plane) {
     for (int r = 0; r < kN; ++r) {
         Complex* row = plane.data() + r * kN;

@@ -32,6 +32,9 @@ public:
     CorrelationFilter();
 
     void reset() { valid_ = false; }
+    // What `other` has learned (its filter and window size), without its FFT plans or buffers: no
+    // allocation, unlike a copy.
+    void copy_learned(const CorrelationFilter& other);
     bool valid() const { return valid_; }
     double window_px() const { return window_px_; }
 

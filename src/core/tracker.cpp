@@ -232,7 +232,10 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     }
     model_.learn(contour_, scratch_);
     // A person's target as it looked at the start: the learned looks drift with the contour, this does not.
-    if (from == StartFrom::Person && !same_target) start_grey_ = inside_grey_share();
+    if (from == StartFrom::Person && !same_target) {
+        start_grey_ = inside_grey_share();
+        start_looks_.copy_learned(filter_);
+    }
     if (from == StartFrom::Detector) start_grey_ = 0.0;
     remember_contour();
     return true;
@@ -519,9 +522,15 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     if (result_.state == TrackState::Tracking) {
         track(deadline);
         // A person's target that the filter still finds, and that is as grey as it was at the start,
-        // is the target, standing still or not.
-        const bool confirmed = person_start_ && match_.psr >= kConfidentPsr && as_grey_as_at_start();
-        if (result_.state == TrackState::Tracking && !watch_still_track(frame) && !confirmed) {
+        // is the target, standing still or not — unless the target as it looked at the start is
+        // found where the motion is, surely and more clearly than where the track stands.
+        auto confirmed = [&] {
+            if (!person_start_ || match_.psr < kConfidentPsr || !as_grey_as_at_start()) return false;
+            const double here = start_looks_.locate(smoothed_, chroma, contour_.centroid).psr;
+            const double there = start_looks_.locate(smoothed_, chroma, result_.detection.centre).psr;
+            return there < kConfidentPsr || there <= here;
+        };
+        if (result_.state == TrackState::Tracking && !watch_still_track(frame) && !confirmed()) {
             declare_lost("the track stood still while motion went on away from it");
             result_.off_target = true;
             filter_.reset();  // it learned the looks of something beside the mover: not to be looked for again

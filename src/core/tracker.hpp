@@ -123,6 +123,7 @@ private:
     AppearanceModel appearance_;  // the target's colours against its surroundings (colour sources)
     LikelihoodMap likelihood_;    // this frame's colours seen through it
     CorrelationFilter filter_;    // the target's looks, to find it before the rays look for its rim
+    CorrelationFilter start_looks_;  // a person's target's looks at its first contour (not learned since)
     FilterMatch match_;           // where it found the target this frame
     int rim_frames_ = 0;          // frames of this target whose contour was found by its rim
     const GreyImage* frame_ = nullptr;  // the frame being processed, and its colour

@@ -113,6 +113,33 @@ TEST_CASE("The filter's confidence collapses when the target is covered", "[filt
     CHECK(covered < 0.5 * seen);
 }
 
+TEST_CASE("A filter's learned looks copied into another find the target as the original does, and stay as they were", "[filter]") {
+    TexturedScene scene;
+    auto f = std::make_unique<Images>();
+    f->chroma.present = true;
+    draw(scene, *f);
+    auto filter = std::make_unique<CorrelationFilter>();
+    auto copy = std::make_unique<CorrelationFilter>();
+    filter->learn(f->smoothed, f->chroma, scene.target, 2.0 * TexturedScene::kHalf, 1.0f);
+    copy->copy_learned(*filter);
+    REQUIRE(copy->valid());
+    CHECK(copy->window_px() == filter->window_px());
+
+    scene.target = {scene.target.x + 3.0, scene.target.y - 2.0};
+    scene.pan = {-2.0, 0.0};
+    draw(scene, *f);
+    const rays::FilterMatch a = filter->locate(f->smoothed, f->chroma, {48.0, 60.0});
+    const rays::FilterMatch b = copy->locate(f->smoothed, f->chroma, {48.0, 60.0});
+    CHECK(b.at.x == a.at.x);
+    CHECK(b.at.y == a.at.y);
+    CHECK(b.psr == a.psr);
+    // The original learns something else (the background where the target was); the copy does not.
+    filter->learn(f->smoothed, f->chroma, {20.0, 20.0}, 2.0 * TexturedScene::kHalf, 1.0f);
+    const rays::FilterMatch c = copy->locate(f->smoothed, f->chroma, {48.0, 60.0});
+    CHECK(c.psr == b.psr);
+    CHECK(filter->locate(f->smoothed, f->chroma, {48.0, 60.0}).psr < b.psr);
+}
+
 TEST_CASE("The filter's window follows the target's size, within the frame", "[filter]") {
     TexturedScene scene;
     auto f = std::make_unique<Images>();

@@ -208,8 +208,8 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         reason = attention_.check(contour_, contour_.centroid, limits);
     }
     // A person's point is on the target: a contour that has moved off it is of something beside it;
-    // the contour seen from the point itself is the target's.
-    if (from == StartFrom::Person && !contour_contains(contour_, m)) {
+    // the contour seen from the point itself is the target's. (A box's centre need not be on it.)
+    if (from == StartFrom::Person && !start_box_ && !contour_contains(contour_, m)) {
         rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_, -1, false);
         attention_.reset();  // the contour it replaces is no previous frame's
         reason = attention_.check(contour_, contour_.centroid, limits);

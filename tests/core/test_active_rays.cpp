@@ -69,18 +69,18 @@ struct Extraction {
 
     // Extracts round m from a circle prior of radius 10 (the tracker's first guess), no temporal term.
     const Contour& run(const SceneFrame& frame, Point m, const TargetModel& model = {}, const Clock* clock = nullptr,
-                       TimePoint deadline = TimePoint::max(), int max_level = -1) {
+                       TimePoint deadline = TimePoint::max(), int max_level = -1, bool m_moves = true) {
         prior.set_circle(10.0);
-        return run_with_prior(frame, m, false, model, clock, deadline, max_level);
+        return run_with_prior(frame, m, false, model, clock, deadline, max_level, m_moves);
     }
 
     const Contour& run_with_prior(const SceneFrame& frame, Point m, bool use_temporal, const TargetModel& model = {},
                                   const Clock* clock = nullptr, TimePoint deadline = TimePoint::max(),
-                                  int max_level = -1) {
+                                  int max_level = -1, bool m_moves = true) {
         smoother.set_sigma(tunables.sigma_px);
         smoother.smooth(frame.image, smoothed);
         const Clock& c = clock ? *clock : steady;
-        rays.extract(smoothed, m, prior, use_temporal, model, c, deadline, contour, max_level);
+        rays.extract(smoothed, m, prior, use_temporal, model, c, deadline, contour, max_level, m_moves);
         return contour;
     }
 };
@@ -165,12 +165,8 @@ TEST_CASE("ActiveRays moves m to the centroid from an off-centre start", "[activ
 TEST_CASE("ActiveRays holds m where it is told to: the contour seen from an off-centre point", "[active_rays]") {
     auto frame = test_disc();
     Extraction x;
-    x.prior.set_circle(10.0);
-    x.smoother.set_sigma(x.tunables.sigma_px);
-    x.smoother.smooth(frame->image, x.smoothed);
     const Point m{kCx + 7, kCy - 3};
-    x.rays.extract(x.smoothed, m, x.prior, false, TargetModel{}, x.steady, TimePoint::max(), x.contour, -1, false);
-    const Contour& c = x.contour;
+    const Contour& c = x.run(*frame, m, {}, nullptr, TimePoint::max(), -1, false);
     INFO("IoU " << iou(c, *frame) << ", centroid error " << centroid_error(c, *frame));
     CHECK(c.iterations == 1);
     CHECK(c.ref.x == m.x);  // not moved toward the disc's centre (eq. 11 not applied)

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: Apache-2.0
+// The motion layers on scenes drawn here: a textured target moving one way across a textured world
+// the camera pans the other way. The map must call the whole target the target from a contour round
+// part of it, call the world the background, and say nothing where the two move alike; in the
+// tracker, the contour from a point on one patch of a patchy target must take in the other patch.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include "core/motion_layers.hpp"
+#include "support/block_texture.hpp"
+
+namespace {
+
+using rays::Contour;
+using rays::FloatImage;
+using rays::LikelihoodMap;
+using rays::MotionLayers;
+using rays::Point;
+
+constexpr double kRadius = 14.0;  // the target's, px
+
+// The view at x shows the world at x + pan; the target is a disc of its own texture centred at `target`.
+void draw(FloatImage& image, Point target, Point pan) {
+    for (int y = 0; y < rays::kFrameSize; ++y)
+        for (int x = 0; x < rays::kFrameSize; ++x) {
+            const double dx = x - target.x, dy = y - target.y;
+            const bool on = dx * dx + dy * dy <= kRadius * kRadius;
+            image.at(x, y) = static_cast<float>(on ? rays::test::smooth_blocks(dx, dy, 7u, 4.0, 40, 160)
+                                                   : rays::test::smooth_blocks(x + pan.x, y + pan.y, 1u, 5.0, 40, 160));
+        }
+}
+
+// A contour round part of the target: a circle of `radius` about `centre`, shot from there.
+void circle(Contour& contour, Point centre, double radius) {
+    contour.size = 64;
+    contour.ref = centre;
+    for (int i = 0; i < contour.size; ++i) {
+        const double a = 2.0 * std::numbers::pi * i / contour.size;
+        contour.points[static_cast<std::size_t>(i)].p = {centre.x + radius * std::cos(a), centre.y + radius * std::sin(a)};
+    }
+    rays::polygon_area_centroid(contour.points.data(), contour.size, contour.area, contour.centroid);
+}
+
+struct Means {
+    double target = 0.0;      // over the target's cells outside the contour (radius 8 … 12)
+    double background = 0.0;  // over the cells further than 20 px from the target
+    double magnitude = 0.0;   // mean |log-odds| over the whole map
+};
+
+Means read(const MotionLayers& layers, Point target) {
+    LikelihoodMap map;
+    layers.add_to(map, {0.0, 0.0});
+    Means m;
+    int nt = 0, nb = 0;
+    for (int j = 0; j < rays::kChromaSize; ++j)
+        for (int i = 0; i < rays::kChromaSize; ++i) {
+            const double d = std::hypot(2 * i + 0.5 - target.x, 2 * j + 0.5 - target.y);
+            const float v = map.cell(i, j);
+            m.magnitude += std::abs(v) / rays::kChromaPixels;
+            if (d >= 8.0 && d <= 12.0) m.target += v, ++nt;
+            if (d > 20.0) m.background += v, ++nb;
+        }
+    m.target /= nt;
+    m.background /= nb;
+    return m;
+}
+
+struct Run {
+    std::unique_ptr<FloatImage> before = std::make_unique<FloatImage>(), now = std::make_unique<FloatImage>();
+    Contour contour{rays::TrackerCapacity{}};
+    MotionLayers layers;
+
+    // Frames 0 … frames: the target moves by `step` a frame, the view by `view` (this(x) = before(x − view)).
+    // The layers are told the centroid moved by `told` (the real step when absent).
+    Point run(int frames, Point step, Point view, const Point* told = nullptr) {
+        const Point start{50.0, 64.0};
+        draw(*before, start, {0.0, 0.0});
+        Point target = start;
+        for (int f = 1; f <= frames; ++f) {
+            target = {start.x + f * step.x, start.y + f * step.y};
+            draw(*now, target, {-f * view.x, -f * view.y});
+            circle(contour, target, 0.35 * kRadius);
+            layers.update(*now, *before, contour, told ? *told : step, view);
+            std::swap(before, now);
+        }
+        return target;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("MotionLayers calls the whole target the target from a contour round part of it", "[motion_layers]") {
+    Run r;
+    const Point target = r.run(6, {1.0, 0.0}, {-1.5, 0.5});
+    REQUIRE(r.layers.valid());
+    const Means m = read(r.layers, target);
+    INFO("target " << m.target << ", background " << m.background);
+    CHECK(m.target > 1.5);       // beyond the contour, on the target: it moves with it
+    CHECK(m.background < -1.5);  // the world moves with the view
+    CHECK(std::abs(r.layers.target_shift().x - 1.0) <= 0.25);
+    CHECK(std::abs(r.layers.target_shift().y) <= 0.25);
+}
+
+TEST_CASE("MotionLayers finds the target's shift where the centroid's is off by four pixels", "[motion_layers]") {
+    Run r;
+    const Point told{5.0, -1.0};  // a contour that changed shape moved its centroid further than the target
+    const Point target = r.run(4, {1.0, 0.0}, {-1.5, 0.5}, &told);
+    INFO("shift " << r.layers.target_shift().x << ", " << r.layers.target_shift().y);
+    CHECK(std::abs(r.layers.target_shift().x - 1.0) <= 0.25);
+    CHECK(std::abs(r.layers.target_shift().y) <= 0.25);
+    CHECK(read(r.layers, target).target > 1.0);
+}
+
+TEST_CASE("MotionLayers says nothing where the target and the view move alike", "[motion_layers]") {
+    Run r;
+    r.run(6, {1.0, 0.5}, {1.0, 0.5});
+    REQUIRE(r.layers.valid());
+    CHECK(read(r.layers, {56.0, 67.0}).magnitude < 0.05);
+}
+

@@ -105,8 +105,28 @@ bool Tracker::learn_colours(float rate) {
 
 void Tracker::look_with_colours() {
     const bool colours = tunables_.rays.appearance_weight > 0.0 && chroma_->present && appearance_.valid();
-    if (colours) appearance_.likelihood(*frame_, *chroma_, likelihood_);
+    if (colours) {
+        appearance_.likelihood(*frame_, *chroma_, likelihood_);
+        // While the view moves, what moves with the target is the target too, whatever its colours
+        // (motion_layers.hpp). On a still view the learned background tells movers from the scene,
+        // and the layers would claim every other mover going the target's way (a crowd).
+        if (layers_read() && result_.state == TrackState::Tracking) layers_.add_to(likelihood_, velocity_);
+    }
     rays_.use_likelihood(colours ? &likelihood_ : nullptr);
+}
+
+bool Tracker::layers_on() const {
+    return tunables_.rays.motion_layers && tunables_.rays.appearance_weight > 0.0 && chroma_->present;
+}
+
+bool Tracker::layers_read() const { return layers_on() && view_moved_ && layers_.valid(); }
+
+void Tracker::learn_motion(Point last) {
+    const ViewShift& view = view_motion_.since_previous();
+    view_moved_ = view.known && !view.still;
+    if (layers_on() && has_previous_ && view.known)
+        layers_.update(smoothed_, previous_smoothed_, contour_, {contour_.centroid.x - last.x, contour_.centroid.y - last.y},
+                       view.shift);
 }
 
 void Tracker::use_seeded_colours(bool seeded) {
@@ -160,6 +180,7 @@ Point Tracker::best_start(Point centre, double radius, TimePoint deadline) {
 bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline) {
     if (!same_target) {
         model_.reset();
+        layers_.reset();
         forget_colours();
         if (from != StartFrom::Prediction) person_start_ = from == StartFrom::Person;  // a re-acquisition keeps it
     }
@@ -183,6 +204,7 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     // like the box's inside (PolarPrior::set_box, TargetModel::seed_inside).
     prior_.set_box(box);
     model_.reset();
+    layers_.reset();
     person_start_ = true;
     model_.seed_inside(smoothed_, box);
     // The box holds the target, a band round it does not: what the box holds beside the target
@@ -347,6 +369,7 @@ void Tracker::track(TimePoint deadline) {
     }
     follow(last);
     ++rim_frames_;
+    learn_motion(last);
     if (match_.psr > 0.0) psr_tracked_ = psr_tracked_ == 0.0 ? match_.psr : psr_tracked_ + kPsrRate * (match_.psr - psr_tracked_);
     model_.learn(contour_, scratch_);
     learn_colours(kColourRate);
@@ -450,6 +473,7 @@ const char* Tracker::check_contour(Point predicted, bool confident) {
 
 void Tracker::declare_lost(const char* reason) {
     search_cursor_ = 0;
+    layers_.reset();  // where the target was is no guide to where it is found again
     result_.state = TrackState::Lost;
     result_.has_contour = false;
     result_.lost_reason = reason;
@@ -574,6 +598,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     if (keep_background) background_.learn(smoothed_, result_.has_contour ? &contour_ : nullptr);
     external_prediction_.reset();
     previous_ = frame;
+    previous_smoothed_ = smoothed_;
     has_previous_ = true;
     return result_;
 }

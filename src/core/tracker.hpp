@@ -15,6 +15,7 @@
 #include "core/correlation_filter.hpp"
 #include "core/gaussian_smoother.hpp"
 #include "core/motion_detector.hpp"
+#include "core/motion_layers.hpp"
 #include "core/view_motion.hpp"
 
 namespace rays {
@@ -102,6 +103,12 @@ private:
     // with at once where it was seeded, else none.
     void use_seeded_colours(bool seeded);
     void forget_colours();
+    // Whether the motion layers are kept: a colour source with both terms on.
+    bool layers_on() const;
+    // Whether the rays read them this frame: the view moved, and they have seen enough.
+    bool layers_read() const;
+    // After a frame tracked by its rim (the centroid was at `last`): the layers learn from it.
+    void learn_motion(Point last);
     // Learns the correlation filter on this frame's contour at `rate` (1: a new target's first),
     // centred on its centroid or on `at`; `located`: from the window the filter looked in this frame.
     void learn_looks(float rate, bool located, const Point* at = nullptr);
@@ -112,6 +119,7 @@ private:
     TrackerTunables tunables_;
     GaussianSmoother smoother_;
     FloatImage smoothed_;
+    FloatImage previous_smoothed_;  // the previous frame's, for the motion layers
     GreyImage previous_;
     bool has_previous_ = false;
     MotionDetector detector_;
@@ -121,7 +129,9 @@ private:
     PolarPrior prior_;
     TargetModel model_;
     AppearanceModel appearance_;  // the target's colours against its surroundings (colour sources)
-    LikelihoodMap likelihood_;    // this frame's colours seen through it
+    MotionLayers layers_;         // where things move with the target, not with the view
+    bool view_moved_ = false;     // the view moved between the last two frames tracked by their rim
+    LikelihoodMap likelihood_;    // this frame's colours (and motion) seen through them
     CorrelationFilter filter_;    // the target's looks, to find it before the rays look for its rim
     CorrelationFilter start_looks_;  // a person's target's looks at its first contour (not learned since)
     FilterMatch match_;           // where it found the target this frame

@@ -2,7 +2,7 @@
 // The motion layers on scenes drawn here: a textured target moving one way across a textured world
 // the camera pans the other way. The map must call the whole target the target from a contour round
 // part of it, call the world the background, and say nothing where the two move alike; in the
-// tracker, the contour from a point on one patch of a patchy target must take in the other patch.
+// tracker, a target of the world's own texture and colour must be found by its motion alone.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,7 +10,9 @@
 #include <numbers>
 
 #include "core/motion_layers.hpp"
+#include "core/tracker.hpp"
 #include "support/block_texture.hpp"
+#include "support/camouflaged_target_scene.hpp"
 
 namespace {
 
@@ -121,3 +123,31 @@ TEST_CASE("MotionLayers says nothing where the target and the view move alike", 
     CHECK(read(r.layers, {56.0, 67.0}).magnitude < 0.05);
 }
 
+namespace {
+
+// Tracks the camouflaged target from its centre; the contours' mean overlap with the target over
+// the last `scored` of `frames` frames (a frame not tracked scores 0).
+double track_camouflaged(bool layers, int frames, int scored) {
+    rays::TrackerConfig config;
+    config.tunables.rays.motion_layers = layers;
+    const rays::SteadyClock clock;
+    rays::Tracker tracker(config, clock);
+    const auto scene = std::make_unique<rays::test::CamouflagedTargetScene>();
+    tracker.start_at(scene->centre(0));
+    double sum = 0.0;
+    for (int f = 0; f < frames; ++f) {
+        scene->draw(f);
+        const bool tracking = tracker.process(scene->image, scene->chroma, rays::TimePoint::max()).state == rays::TrackState::Tracking;
+        if (f >= frames - scored && tracking) sum += rays::test::contour_mask_iou(tracker.contour(), scene->mask);
+    }
+    return sum / scored;
+}
+
+}  // namespace
+
+TEST_CASE("Tracker finds the rim of a target camouflaged in grey and colour by its motion while the view pans", "[motion_layers][tracker]") {
+    const double with = track_camouflaged(true, 40, 20), without = track_camouflaged(false, 40, 20);
+    INFO("overlap with the layers " << with << ", without " << without);
+    CHECK(with > 0.8);
+    CHECK(without < 0.6);
+}

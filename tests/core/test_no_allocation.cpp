@@ -4,11 +4,14 @@
 #include <catch2/catch.hpp>
 
 #include "core/tracker.hpp"
+#include "support/camouflaged_target_scene.hpp"
 #include "support/skip.hpp"
 #include "support/thread_allocation_counter.hpp"
 #include "support/tracker_allocation_run.hpp"
 
+#include <cmath>
 #include <memory>
+#include <vector>
 
 
 using rays::test::counted_allocations;
@@ -85,5 +88,41 @@ TEST_CASE("Tracker::process, set_tunables and a box start allocate nothing while
     CHECK(run.allocations == 0);
     CHECK(run.tracking >= 100);
     CHECK(tracker.appearance().valid() == colour);
+#endif
+}
+
+TEST_CASE("Tracker::process allocates nothing while the motion layers learn and are read (colour, panning view)",
+          "[no_allocation]") {
+#ifdef RAYS_SANITIZED
+    skip_under_asan();
+#else
+    constexpr int kFrames = 40;
+    const rays::TrackerConfig config;
+    const rays::SteadyClock clock;
+    rays::Tracker tracker(config, clock);
+    // Drawn before counting: the scene's frames are the caller's, not the tracker's.
+    std::vector<std::unique_ptr<rays::test::CamouflagedTargetScene>> frames;
+    for (int f = 0; f < kFrames; ++f) {
+        frames.push_back(std::make_unique<rays::test::CamouflagedTargetScene>());
+        frames.back()->draw(f);
+    }
+    tracker.start_at(frames.front()->centre(0));
+    long allocations = 0;
+    int tracking = 0;
+    double overlap = 0.0;  // over the last half of the frames
+    for (int f = 0; f < kFrames; ++f) {
+        const auto& scene = *frames[static_cast<std::size_t>(f)];
+        {
+            CountingScope counting;
+            tracking += tracker.process(scene.image, scene.chroma, rays::TimePoint::max()).state == rays::TrackState::Tracking;
+        }
+        allocations += counted_allocations();
+        if (f >= kFrames / 2) overlap += rays::test::contour_mask_iou(tracker.contour(), scene.mask) / (kFrames / 2);
+    }
+    CHECK(allocations == 0);
+    // Tracked through, round the target: the layers were learned and read (without them the contour
+    // wanders over the texture: test_motion_layers.cpp).
+    CHECK(tracking == kFrames);
+    CHECK(overlap > 0.8);
 #endif
 }

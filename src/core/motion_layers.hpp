@@ -66,7 +66,8 @@ private:
     std::array<float, kInsideSamples> inside_now_{};
     int inside_count_ = 0;
     LikelihoodMap map_;  // the log-odds as of the last update
-    CellPlane here_{}, target_{}, view_{}, next_{};  // this update's cells: now, and before moved each layer's way
+    // This update's cells: now, and before moved each layer's way (then the residuals of the two).
+    CellPlane here_{}, target_{}, view_{}, next_{};
     std::array<bool, kChromaPixels> target_off_{}, view_off_{};
     Point shift_;
     int frames_ = 0;

@@ -124,7 +124,7 @@ bool Tracker::layers_read() const { return layers_on() && view_moved_ && layers_
 void Tracker::learn_motion(Point last) {
     const ViewShift& view = view_motion_.since_previous();
     view_moved_ = view.known && !view.still;
-    if (layers_on() && has_previous_ && view.known)
+    if (layers_on() && has_previous_smoothed_ && view.known)
         layers_.update(smoothed_, previous_smoothed_, contour_, {contour_.centroid.x - last.x, contour_.centroid.y - last.y},
                        view.shift);
 }
@@ -598,7 +598,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     if (keep_background) background_.learn(smoothed_, result_.has_contour ? &contour_ : nullptr);
     external_prediction_.reset();
     previous_ = frame;
-    previous_smoothed_ = smoothed_;
+    has_previous_smoothed_ = layers_on();  // only the layers read it
+    if (has_previous_smoothed_) previous_smoothed_ = smoothed_;
     has_previous_ = true;
     return result_;
 }

@@ -119,7 +119,8 @@ private:
     TrackerTunables tunables_;
     GaussianSmoother smoother_;
     FloatImage smoothed_;
-    FloatImage previous_smoothed_;  // the previous frame's, for the motion layers
+    FloatImage previous_smoothed_;  // the previous frame's, for the motion layers ...
+    bool has_previous_smoothed_ = false;  // ... kept (a colour source with the layers on)
     GreyImage previous_;
     bool has_previous_ = false;
     MotionDetector detector_;

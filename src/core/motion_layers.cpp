@@ -19,6 +19,14 @@ constexpr int kSearchPx = 2;          // the target's shift is searched this far
 
 static_assert(MotionLayers::kInsideSamples == kInsideRays * static_cast<int>(std::size(kInsideAt)));
 
+// Bilinear between the four values at r0[0], r0[1] and a row `stride` below, at (fx, fy) past the first.
+float blend4(const float* r0, int stride, float fx, float fy) {
+    const float* r1 = r0 + stride;
+    const float top = r0[0] + fx * (r0[1] - r0[0]);
+    const float bottom = r1[0] + fx * (r1[1] - r1[0]);
+    return top + fy * (bottom - top);
+}
+
 bool on_image(double x, double y) { return x >= 0.0 && y >= 0.0 && x <= kFrameSize - 1 && y <= kFrameSize - 1; }
 
 }  // namespace
@@ -32,11 +40,7 @@ float MotionLayers::inside_residual(const FloatImage& before, int dx, int dy) co
         const Tap& t = taps_[k];
         const int x = t.x0 - dx, y = t.y0 - dy;
         if (x < 0 || y < 0 || x > kFrameSize - 2 || y > kFrameSize - 2) continue;
-        const float* r0 = before.row(y) + x;
-        const float* r1 = r0 + kFrameSize;
-        const float top = r0[0] + t.fx * (r0[1] - r0[0]);
-        const float bottom = r1[0] + t.fx * (r1[1] - r1[0]);
-        sum += std::abs(inside_now_[k] - (top + t.fy * (bottom - top)));
+        sum += std::abs(inside_now_[k] - blend4(before.row(y) + x, kFrameSize, t.fx, t.fy));
         ++count;
     }
     return count > 0 ? sum / static_cast<float>(count) : std::numeric_limits<float>::max();
@@ -115,11 +119,7 @@ void MotionLayers::sample_cells(const FloatImage& image, Point shift, CellPlane&
             const auto c = static_cast<std::size_t>(j * kChromaSize + i);
             off[c] = x < 0 || y < 0 || x > kFrameSize - 2 || y > kFrameSize - 2;
             if (off[c]) continue;
-            const float* r0 = image.row(y) + x;
-            const float* r1 = r0 + kFrameSize;
-            const float top = r0[0] + fx * (r0[1] - r0[0]);
-            const float bottom = r1[0] + fx * (r1[1] - r1[0]);
-            out[c] = top + fy * (bottom - top);
+            out[c] = blend4(image.row(y) + x, kFrameSize, fx, fy);
         }
     }
 }
@@ -136,10 +136,7 @@ void MotionLayers::add_moved(Point shift, float keep, CellPlane& out) const {
             const int u = i + ou;
             if (u < 0 || u > kChromaSize - 2) continue;
             const float* r0 = &map_.log_odds[static_cast<std::size_t>(v * kChromaSize + u)];
-            const float* r1 = r0 + kChromaSize;
-            const float top = r0[0] + fu * (r0[1] - r0[0]);
-            const float bottom = r1[0] + fu * (r1[1] - r1[0]);
-            out[static_cast<std::size_t>(j * kChromaSize + i)] += keep * (top + fv * (bottom - top));
+            out[static_cast<std::size_t>(j * kChromaSize + i)] += keep * blend4(r0, kChromaSize, fu, fv);
         }
     }
 }

@@ -10,6 +10,12 @@ namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr long kEnumerateLimit = 4096;  // rings with fewer joint states are solved by enumeration
 constexpr int kMaxStatesFast = 256;     // states per node the chain's scratch holds (back pointers are bytes)
+// The closed chain's innermost loop runs over the next node's states in vector lanes (GCC's vector
+// extension: SSE on x86-64, NEON on arm64); four lanes hold the usual K = 3 edges and "no edge".
+constexpr int kLanes = 4;
+constexpr int kMaxChunks = (kMaxStatesFast + kLanes - 1) / kLanes;
+using Lanes = float __attribute__((vector_size(kLanes * sizeof(float))));
+using LaneIndex = int __attribute__((vector_size(kLanes * sizeof(int))));
 
 }  // namespace
 
@@ -75,7 +81,7 @@ double RingDp::enumerate(double alpha, double beta, int* states) {
 
 double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, int* states) {
     const int m = nodes_, stride = max_states_;
-    auto node = [&](int t) { return (first + t) % m; };
+    auto node = [&](int t) { return first + t < m ? first + t : first + t - m; };  // 0 ≤ t < m
     auto pair_cost = [&](int i, int si, int sj) {  // eq. 9, α term between node i and the next
         const int j = (i + 1) % m;
         const float d = lam(j, sj) - lam(i, si);
@@ -93,31 +99,43 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
         const float gp = gap_[prev], gc = gap_[cur];
         const float bw = static_cast<float>(beta) / (0.5f * (gp + gc));
         const float inv_gp = 1.0f / gp, inv_gc = 1.0f / gc, aw = static_cast<float>(alpha) * inv_gc;
-        const int np = states_[prev];
-        float slope_in[kMaxStatesFast];  // (λ_cur,q − λ_prev,p) / gap for this q, per p
-        float cap_in[kMaxStatesFast];    // cap(prev, p), per p
-        for (int p = 0; p < np; ++p) cap_in[p] = cap(prev, p);
+        const int np = states_[prev], nr = states_[next];
+        const int chunks = (nr + kLanes - 1) / kLanes;  // the next node's states, kLanes at a time
+        Lanes lam_next[kMaxChunks], cap_next[kMaxChunks];
+        for (int r = 0; r < chunks * kLanes; ++r) {
+            lam_next[r / kLanes][r % kLanes] = r < nr ? lam(next, r) : 0.0f;
+            cap_next[r / kLanes][r % kLanes] = r < nr ? cap(next, r) : 0.0f;
+        }
         unsigned char* back = &back_[static_cast<std::size_t>(t + 1) * stride * stride];
         for (int q = 0; q < states_[cur]; ++q) {
             const float lq = lam(cur, q);
             const float cq = cap(cur, q);
-            for (int p = 0; p < np; ++p) slope_in[p] = (lq - lam(prev, p)) * inv_gp;
-            for (int r = 0; r < states_[next]; ++r) {
-                const float lr = lam(next, r);
-                const float slope_out = (lr - lq) * inv_gc;
-                const float cqr = std::max(cq, cap(next, r));
-                float best = kInf;
-                int arg = 0;
+            // Every state r of the next node at once, in vector lanes: the best previous state p for
+            // (q, r), the first p on a tie.
+            for (int k = 0; k < chunks; ++k) {
+                const Lanes slope_out = (lam_next[k] - lq) * inv_gc;
+                const Lanes cap_qr = cap_next[k] > cq ? cap_next[k] : cq;
+                Lanes best = kInf + Lanes{};
+                LaneIndex arg = LaneIndex{};
                 for (int p = 0; p < np; ++p) {
-                    const float d = slope_out - slope_in[p];
-                    const float v = value_[p * stride + q] + std::min(bw * d * d, std::max(cqr, cap_in[p]));  // eq. 9, β term
-                    if (v < best) {
-                        best = v;
-                        arg = p;
-                    }
+                    const float slope_in = (lq - lam(prev, p)) * inv_gp;
+                    const Lanes d = slope_out - slope_in;
+                    const float cap_p = cap(prev, p);
+                    const Lanes bound = cap_qr > cap_p ? cap_qr : cap_p;
+                    const Lanes beta_term = bw * d * d;
+                    const Lanes v = value_[p * stride + q] + (bound < beta_term ? bound : beta_term);  // eq. 9, β term
+                    const LaneIndex better = v < best;
+                    best = better ? v : best;
+                    arg = better ? p : arg;
                 }
-                next_value_[q * stride + r] = best + std::min(aw * (lr - lq) * (lr - lq), cqr) + unary(next, r);
-                back[q * stride + r] = static_cast<unsigned char>(arg);
+                const Lanes step = lam_next[k] - lq;
+                const Lanes alpha_term = aw * step * step;
+                const Lanes through = best + (cap_qr < alpha_term ? cap_qr : alpha_term);  // eq. 9, α term
+                for (int l = 0; l < kLanes && k * kLanes + l < nr; ++l) {
+                    const int r = k * kLanes + l;
+                    next_value_[q * stride + r] = through[l] + unary(next, r);
+                    back[q * stride + r] = static_cast<unsigned char>(arg[l]);
+                }
             }
         }
         std::swap(value_, next_value_);

@@ -38,7 +38,6 @@ void sample_chroma(const Chroma& chroma, double x, double y, float& u, float& v)
 }  // namespace
 
 CorrelationFilter::CorrelationFilter() {
-    fft_.SetFlag(Eigen::FFT<float>::Unscaled);
     for (int u = 0; u < kN; ++u) hann_[u] = 0.5f * (1.0f - std::cos(2.0f * std::numbers::pi_v<float> * static_cast<float>(u) / kN));
     for (int k = 0; k < kOrientations; ++k) {
         const double a = 2.0 * std::numbers::pi * k / kOrientations;
@@ -54,11 +53,9 @@ CorrelationFilter::CorrelationFilter() {
             const int du = u < kHalf ? u : u - kN, dv = v < kHalf ? v : v - kN;
             label[v * kN + u] = static_cast<float>(std::exp(-(du * du + dv * dv) / (2.0 * sigma * sigma)));
         }
-    fft2(label);  // also makes the FFT's plans, so that nothing is allocated later
+    fft2(label);
     for (int v = 0; v < kN; ++v)
         for (int u = 0; u < kHalfColumns; ++u) label_[v * kHalfColumns + u] = label[v * kN + u];
-    HalfSpectrum scratch = label_;
-    inverse_real(scratch, response_);  // ... the inverse's plans too
 }
 
 void CorrelationFilter::copy_learned(const CorrelationFilter& other) {
@@ -70,43 +67,57 @@ void CorrelationFilter::copy_learned(const CorrelationFilter& other) {
 }
 
 void CorrelationFilter::fft2(Spectrum& plane) {
-    for (int r = 0; r < kN; ++r) {
-        Complex* row = plane.data() + r * kN;
-        fft_.fwd(line_out_.data(), row, kN);
-        std::copy(line_out_.begin(), line_out_.end(), row);
-    }
-    for (int c = 0; c < kN; ++c) {
-        for (int r = 0; r < kN; ++r) line_[r] = plane[r * kN + c];
-        fft_.fwd(line_out_.data(), line_.data(), kN);
-        for (int r = 0; r < kN; ++r) plane[r * kN + c] = line_out_[r];
-    }
+    // Along the rows: the plane transposed, so that its rows are the columns transformed.
+    for (int v = 0; v < kN; ++v)
+        for (int u = 0; u < kN; ++u) {
+            re_across_[u * kN + v] = plane[v * kN + u].real();
+            im_across_[u * kN + v] = plane[v * kN + u].imag();
+        }
+    fft_.run(re_across_.data(), im_across_.data(), kN, kN, FftColumns::Direction::Forward);
+    // Along the columns: transposed back.
+    for (int u = 0; u < kN; ++u)
+        for (int v = 0; v < kN; ++v) {
+            re_[v * kN + u] = re_across_[u * kN + v];
+            im_[v * kN + u] = im_across_[u * kN + v];
+        }
+    fft_.run(re_.data(), im_.data(), kN, kN, FftColumns::Direction::Forward);
+    for (int k = 0; k < kN * kN; ++k) plane[k] = {re_[k], im_[k]};
 }
 
-void CorrelationFilter::inverse_real(HalfSpectrum& half, Plane& out) {
-    for (int u = 0; u < kHalfColumns; ++u) {
-        for (int v = 0; v < kN; ++v) line_[v] = half[v * kHalfColumns + u];
-        fft_.inv(line_out_.data(), line_.data(), kN);
-        for (int v = 0; v < kN; ++v) half[v * kHalfColumns + u] = line_out_[v];
+void CorrelationFilter::inverse_real(const HalfSpectrum& half, Plane& out) {
+    for (int h = 0; h < kN * kHalfColumns; ++h) {
+        re_[h] = half[h].real();
+        im_[h] = half[h].imag();
     }
+    fft_.run(re_.data(), im_.data(), kHalfColumns, kHalfColumns, FftColumns::Direction::Inverse);
     // Each row is now the half spectrum of a real line, X(N − u) = conj X(u). Two rows a and b go
     // through one complex inverse as X_a + i·X_b: the real part comes out as a, the imaginary as b.
     // The lone frequencies u = 0 and N/2 of a real line are real: their imaginary parts are dropped.
-    constexpr Complex i{0.0f, 1.0f};
+    // Line y / 2 is laid out as column y / 2 of a block N rows by N / 2 columns.
+    constexpr int kLines = kN / 2;
     for (int y = 0; y < kN; y += 2) {
-        const Complex* a = half.data() + y * kHalfColumns;
-        const Complex* b = a + kHalfColumns;
-        line_[0] = {a[0].real(), b[0].real()};
-        line_[kHalf] = {a[kHalf].real(), b[kHalf].real()};
+        const int line = y / 2;
+        const float* ar = re_.data() + y * kHalfColumns;
+        const float* ai = im_.data() + y * kHalfColumns;
+        const float* br = ar + kHalfColumns;
+        const float* bi = ai + kHalfColumns;
+        re_across_[line] = ar[0];
+        im_across_[line] = br[0];
+        re_across_[kHalf * kLines + line] = ar[kHalf];
+        im_across_[kHalf * kLines + line] = br[kHalf];
         for (int u = 1; u < kHalf; ++u) {
-            line_[u] = a[u] + i * b[u];
-            line_[kN - u] = std::conj(a[u]) + i * std::conj(b[u]);
-        }
-        fft_.inv(line_out_.data(), line_.data(), kN);
-        for (int x = 0; x < kN; ++x) {
-            out[y * kN + x] = line_out_[x].real();
-            out[(y + 1) * kN + x] = line_out_[x].imag();
+            re_across_[u * kLines + line] = ar[u] - bi[u];  // a(u) + i·b(u)
+            im_across_[u * kLines + line] = ai[u] + br[u];
+            re_across_[(kN - u) * kLines + line] = ar[u] + bi[u];  // conj a(u) + i·conj b(u)
+            im_across_[(kN - u) * kLines + line] = br[u] - ai[u];
         }
     }
+    fft_.run(re_across_.data(), im_across_.data(), kLines, kLines, FftColumns::Direction::Inverse);
+    for (int y = 0; y < kN; y += 2)
+        for (int x = 0; x < kN; ++x) {
+            out[y * kN + x] = re_across_[x * kLines + y / 2];
+            out[(y + 1) * kN + x] = im_across_[x * kLines + y / 2];
+        }
 }
 
 void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma, Point centre, int pairs) {

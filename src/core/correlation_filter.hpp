@@ -10,8 +10,8 @@
 #pragma once
 #include <array>
 #include <complex>
-#include <unsupported/Eigen/FFT>
 
+#include "core/fft_columns.hpp"
 #include "core/image.hpp"
 
 namespace rays {
@@ -66,10 +66,11 @@ private:
     // moved by the target's displacement in the window).
     void blend(double du, double dv, bool fresh, float rate);
     void fft2(Spectrum& plane);
-    // The real plane whose half spectrum is `half` (unscaled inverse; `half` is overwritten).
-    void inverse_real(HalfSpectrum& half, Plane& out);
+    // The real plane whose half spectrum is `half` (unscaled inverse).
+    void inverse_real(const HalfSpectrum& half, Plane& out);
 
-    Eigen::FFT<float> fft_;
+    FftColumns fft_;
+    Plane re_{}, im_{}, re_across_{}, im_across_{};  // the transforms' split planes, as laid out and transposed
     std::array<Spectrum, kPairs> pairs_{};
     std::array<HalfSpectrum, kChannels> features_{};
     std::array<HalfSpectrum, kChannels> numerator_{};  // A_l = G · conj(F_l), learned
@@ -77,7 +78,6 @@ private:
     HalfSpectrum label_{};  // G: the Gaussian the response should be, peaked at displacement 0
     HalfSpectrum response_spectrum_{};
     Plane response_{};
-    std::array<Complex, kSize> line_{}, line_out_{};
     std::array<float, kSize> hann_{};
     std::array<float, kOrientations> cos2_{}, sin2_{};  // cos 2θ_k and sin 2θ_k of each orientation bin
     Plane grey_{}, gx_{}, gy_{}, magnitude_{};  // the window's samples and their gradient

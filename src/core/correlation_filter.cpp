@@ -195,6 +195,7 @@ void CorrelationFilter::transform_window(const FloatImage& image, const Chroma& 
     window_centre_ = centre;
     const int channels = chroma.present ? kChannels : 1 + kOrientations;
     const int pairs = (channels + 1) / 2;
+    window_colour_ = chroma.present;
     fill_pairs(image, chroma, centre, pairs);
     for (int p = 0; p < pairs; ++p) fft2(pairs_[p]);
     // A real plane's spectrum is conjugate-symmetric, so the pair a + ib unpacks as
@@ -258,18 +259,22 @@ void CorrelationFilter::blend(double du, double dv, bool fresh, float rate) {
     // The multi-channel closed form (DSST eq. 5): A_l = G·conj(F_l), B = Σ_l |F_l|², each a running
     // mean over frames at `rate` (MOSSE's update).
     const float keep = fresh ? 0.0f : 1.0f - rate, take = fresh ? 1.0f : rate;
+    const int channels = window_colour_ ? kChannels : 1 + kOrientations;
     for (int v = 0; v < kN; ++v)
         for (int u = 0; u < kHalfColumns; ++u) {
             const int h = v * kHalfColumns + u;
             const Complex g = label_[h] * ramp_u_[u] * ramp_v_[v];
             float energy = 0.0f;
-            for (int c = 0; c < kChannels; ++c) {
+            for (int c = 0; c < channels; ++c) {
                 const Complex f = features_[c][h];
                 numerator_[c][h] = keep * numerator_[c][h] + take * (g * std::conj(f));
                 energy += std::norm(f);
             }
             denominator_[h] = keep * denominator_[h] + take * energy;
         }
+    // A mono window's chroma channels are 0: they take nothing, and keep what they had at `keep`.
+    for (int c = channels; c < kChannels; ++c)
+        for (Complex& a : numerator_[c]) a *= keep;
 }
 
 FilterMatch CorrelationFilter::locate(const FloatImage& image, const Chroma& chroma, Point around) {

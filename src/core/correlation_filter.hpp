@@ -83,6 +83,7 @@ private:
     Plane grey_{}, gx_{}, gy_{}, magnitude_{};  // the window's samples and their gradient
     std::array<Complex, kSize> ramp_u_{}, ramp_v_{};
     Point window_centre_;  // where the last transformed window was centred
+    bool window_colour_ = false;  // ... and whether it had chroma channels
     bool colour_ = false;  // the filter was learned with chroma channels
     bool valid_ = false;
     double window_px_ = 0.0;

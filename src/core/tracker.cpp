@@ -122,9 +122,11 @@ bool Tracker::layers_on() const {
 bool Tracker::layers_read() const { return layers_on() && view_moved_ && layers_.valid(); }
 
 void Tracker::learn_motion(Point last) {
+    view_moved_ = false;
+    if (!layers_on()) return;  // the view's shift is not worked out for nothing (it is, lazily, where read)
     const ViewShift& view = view_motion_.since_previous();
     view_moved_ = view.known && !view.still;
-    if (layers_on() && has_previous_smoothed_ && view.known)
+    if (has_previous_smoothed_ && view.known)
         layers_.update(smoothed_, previous_smoothed_, contour_, {contour_.centroid.x - last.x, contour_.centroid.y - last.y},
                        view.shift);
 }

@@ -92,7 +92,10 @@ void PolarPrior::resample_lambda(const RayTable& table, Point m, double lo, doub
         if (angle_[k] < angle_[first]) first = k;
     }
     int k = 0;  // current edge: vertex (first + k) to (first + k + 1)
-    auto vertex = [&](int j) { return (first + j) % n_; };
+    auto vertex = [&](int j) {  // (first + j) mod n_ for 0 ≤ j ≤ n_ + 1, without a division
+        const int v = first + j;
+        return v < n_ ? v : v - n_ < n_ ? v - n_ : v - 2 * n_;
+    };
     auto unwrapped = [&](int j) { return angle_[vertex(j)] + (j >= n_ ? two_pi : 0.0); };
     for (int i = 0; i < rays; ++i) {
         const double phi = table.angle(i);

@@ -32,17 +32,17 @@ bool normalise(std::array<float, kFrameSize>& p) {
 }  // namespace
 
 std::optional<double> ViewMotion::best_shift(const Profile& before, const Profile& now) {
-    // cost(s): mean squared difference where now(i) and before(i − s) overlap.
+    // cost(s): mean squared difference where now(i) and before(i − s) overlap. Every shift's sum
+    // runs over i in order, all shifts side by side: independent chains of adds, not one long one.
     std::array<double, 2 * kMaxShiftPx + 1> cost{};
-    for (int s = -kMaxShiftPx; s <= kMaxShiftPx; ++s) {
-        double sum = 0.0;
-        const int from = std::max(0, s), to = std::min(kFrameSize, kFrameSize + s);
-        for (int i = from; i < to; ++i) {
+    for (int i = 0; i < kFrameSize; ++i) {
+        const int s_from = std::max(-kMaxShiftPx, i - (kFrameSize - 1)), s_to = std::min(kMaxShiftPx, i);
+        for (int s = s_from; s <= s_to; ++s) {
             const double d = now[i] - before[i - s];
-            sum += d * d;
+            cost[s + kMaxShiftPx] += d * d;
         }
-        cost[s + kMaxShiftPx] = sum / (to - from);
     }
+    for (int s = -kMaxShiftPx; s <= kMaxShiftPx; ++s) cost[s + kMaxShiftPx] /= kFrameSize - std::abs(s);
     const int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
     if (cost[best] > kMatchCost) return std::nullopt;
     if (best == 0 || best == 2 * kMaxShiftPx) return best - kMaxShiftPx;

@@ -131,18 +131,26 @@ bool AppearanceModel::blend(int targets, int backgrounds, float rate) {
     for (int b = 0; b < kBins; ++b) {
         target_[b] = (1.0f - w) * target_[b] + wt * new_target_[b];
         background_[b] = (1.0f - w) * background_[b] + wb * new_background_[b];
-        // Bayes with equal priors on the two histograms (Staple's P(O | x)), as log-odds.
-        const float odds = std::log((target_[b] + kUnseen) / (background_[b] + kUnseen));
-        log_odds_[b] = std::clamp(odds, -LikelihoodMap::kMaxLogOdds, LikelihoodMap::kMaxLogOdds);
     }
+    odds_known_.fill(false);
     valid_ = true;
     return true;
 }
 
-void AppearanceModel::likelihood(const GreyImage& luma, const Chroma& chroma, LikelihoodMap& out) const {
+float AppearanceModel::log_odds(int b) {
+    if (!odds_known_[b]) {
+        // Bayes with equal priors on the two histograms (Staple's P(O | x)), as log-odds.
+        const float odds = std::log((target_[b] + kUnseen) / (background_[b] + kUnseen));
+        log_odds_[b] = std::clamp(odds, -LikelihoodMap::kMaxLogOdds, LikelihoodMap::kMaxLogOdds);
+        odds_known_[b] = true;
+    }
+    return log_odds_[b];
+}
+
+void AppearanceModel::likelihood(const GreyImage& luma, const Chroma& chroma, LikelihoodMap& out) {
     for (int j = 0; j < kChromaSize; ++j)
         for (int i = 0; i < kChromaSize; ++i)
-            out.log_odds[static_cast<std::size_t>(j * kChromaSize + i)] = log_odds_[bin(luma, chroma, i, j)];
+            out.log_odds[static_cast<std::size_t>(j * kChromaSize + i)] = log_odds(bin(luma, chroma, i, j));
 }
 
 }  // namespace rays

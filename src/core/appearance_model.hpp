@@ -68,8 +68,10 @@ public:
     // (its corners, a gap under an arm) is as common round it, so its colours come out near even.
     // Replaces the model; false for a mono frame or too few cells.
     bool seed_box(const GreyImage& luma, const Chroma& chroma, const Box& box, double pad_px);
-    // The log-odds of every cell of the frame. Call only while valid().
-    void likelihood(const GreyImage& luma, const Chroma& chroma, LikelihoodMap& out) const;
+    // The log-odds of every cell of the frame. Call only while valid(). Not const: a bin's log-odds
+    // is worked out from the histograms when a frame first shows its colour (most of the 1024
+    // colours are in no frame), and kept until the model learns again.
+    void likelihood(const GreyImage& luma, const Chroma& chroma, LikelihoodMap& out);
 
 private:
     static int bin(const GreyImage& luma, const Chroma& chroma, int i, int j);
@@ -79,11 +81,14 @@ private:
     bool seed_where(const GreyImage& luma, const Chroma& chroma, Place place);
     // Takes new_target_ and new_background_ (counts) into the model at `rate`.
     bool blend(int targets, int backgrounds, float rate);
+    // Bin b's log-odds, worked out if not yet known since the last blend.
+    float log_odds(int b);
     // Marks the cells whose centres lie inside the contour, within rows j0 … j1 (even-odd rule).
     void fill_inside(const Contour& contour, int j0, int j1);
 
     std::array<float, kBins> target_{}, background_{};  // each sums to 1
-    std::array<float, kBins> log_odds_{};               // per bin, from the two
+    std::array<float, kBins> log_odds_{};               // per bin, from the two ...
+    std::array<bool, kBins> odds_known_{};              // ... where known since the last blend
     std::array<float, kBins> new_target_{}, new_background_{};
     std::array<unsigned char, kChromaPixels> inside_{};
     // One scan line's crossings of the contour; a line that crosses it more often (a contour jagged

@@ -19,20 +19,36 @@ constexpr float kChromaFloor = 4.0f;    // ... and its colour
 constexpr int kN = CorrelationFilter::kSize;
 constexpr int kHalf = kN / 2;
 
-// Cb and Cr at processing pixel (x, y), bilinear between chroma pixel centres (2i + 0.5, 2j + 0.5).
-void sample_chroma(const Chroma& chroma, double x, double y, float& u, float& v) {
-    const double cu = std::clamp((x - 0.5) * 0.5, 0.0, kChromaSize - 1.001);
-    const double cv = std::clamp((y - 0.5) * 0.5, 0.0, kChromaSize - 1.001);
-    const int i = static_cast<int>(cu), j = static_cast<int>(cv);
-    const float fx = static_cast<float>(cu - i), fy = static_cast<float>(cv - j);
-    const std::size_t a = static_cast<std::size_t>(j * kChromaSize + i), b = a + kChromaSize;
-    auto mix = [&](const std::array<std::uint8_t, kChromaPixels>& p) {
-        const float top = p[a] + fx * (static_cast<float>(p[a + 1]) - p[a]);
-        const float bottom = p[b] + fx * (static_cast<float>(p[b + 1]) - p[b]);
-        return top + fy * (bottom - top);
-    };
-    u = mix(chroma.u);
-    v = mix(chroma.v);
+// Where one coordinate of a window sample falls on a grid: the cell before it and the fraction
+// beyond. The window's samples lie on a square lattice, so each column and each row is placed once.
+struct GridPlace {
+    int cell = 0;
+    float frac = 0.0f;
+};
+
+// On the processing pixels, clamped as sample_bilinear() clamps.
+GridPlace on_pixels(double x) {
+    const double c = std::clamp(x, 0.0, kFrameSize - 1.001);
+    const int i = static_cast<int>(c);
+    return {i, static_cast<float>(c - i)};
+}
+
+// On the chroma pixels, whose centres lie at processing pixels 2i + 0.5.
+GridPlace on_chroma(double x) {
+    const double c = std::clamp((x - 0.5) * 0.5, 0.0, kChromaSize - 1.001);
+    const int i = static_cast<int>(c);
+    return {i, static_cast<float>(c - i)};
+}
+
+// Bilinear between the four grid values round (column, row) of a plane `stride` values wide.
+template <typename T>
+float blend_at(const T* plane, int stride, GridPlace column, GridPlace row) {
+    const T* r0 = plane + row.cell * stride + column.cell;
+    const T* r1 = r0 + stride;
+    const float a = r0[0], b = r0[1], c = r1[0], d = r1[1];
+    const float top = a + column.frac * (b - a);
+    const float bottom = c + column.frac * (d - c);
+    return top + row.frac * (bottom - top);
 }
 
 }  // namespace
@@ -122,16 +138,27 @@ void CorrelationFilter::inverse_real(const HalfSpectrum& half, Plane& out) {
 
 void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma, Point centre, int pairs) {
     const double step = window_px_ / kN;
+    const bool colour = chroma.present;
+    std::array<GridPlace, kN> column_px, row_px, column_cell, row_cell;
+    for (int k = 0; k < kN; ++k) {
+        const double x = centre.x + (k - kHalf) * step, y = centre.y + (k - kHalf) * step;
+        column_px[k] = on_pixels(x);
+        row_px[k] = on_pixels(y);
+        column_cell[k] = on_chroma(x);
+        row_cell[k] = on_chroma(y);
+    }
     double sum = 0.0, squares = 0.0;
-    for (int v = 0; v < kN; ++v) {
-        const double y = centre.y + (v - kHalf) * step;
+    for (int v = 0; v < kN; ++v)
         for (int u = 0; u < kN; ++u) {
-            const float g = sample_bilinear(image, centre.x + (u - kHalf) * step, y);
+            const float g = blend_at(image.px.data(), kFrameSize, column_px[u], row_px[v]);
             grey_[v * kN + u] = g;
             sum += g;
             squares += static_cast<double>(g) * g;
+            if (colour) {
+                cb_[v * kN + u] = blend_at(chroma.u.data(), kChromaSize, column_cell[u], row_cell[v]);
+                cr_[v * kN + u] = blend_at(chroma.v.data(), kChromaSize, column_cell[u], row_cell[v]);
+            }
         }
-    }
     const double count = kN * kN;
     const float mean = static_cast<float>(sum / count);
     const float grey_scale = 1.0f / std::max(kGreyFloor, static_cast<float>(std::sqrt(std::max(0.0, squares / count - mean * mean))));
@@ -148,13 +175,11 @@ void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma
     const float magnitude_scale = 1.0f / std::max(kGreyFloor, static_cast<float>(magnitude_sum / count));
 
     float u_mean = 128.0f, v_mean = 128.0f, chroma_scale = 0.0f;
-    const bool colour = chroma.present;
     if (colour) {
         double su = 0.0, sv = 0.0, q = 0.0;
         for (int v = 0; v < kN; v += 2)
             for (int u = 0; u < kN; u += 2) {
-                float cb, cr;
-                sample_chroma(chroma, centre.x + (u - kHalf) * step, centre.y + (v - kHalf) * step, cb, cr);
+                const float cb = cb_[v * kN + u], cr = cr_[v * kN + u];
                 su += cb;
                 sv += cr;
                 q += static_cast<double>(cb) * cb + static_cast<double>(cr) * cr;
@@ -167,7 +192,6 @@ void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma
     }
 
     for (int v = 0; v < kN; ++v) {
-        const double y = centre.y + (v - kHalf) * step;
         for (int u = 0; u < kN; ++u) {
             const int i = v * kN + u;
             const float w = hann_[u] * hann_[v];
@@ -181,10 +205,8 @@ void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma
                     f[1 + k] = std::max(0.0f, cos2 * cos2_[k] + sin2 * sin2_[k]) * magnitude_scale;
             }
             if (colour) {
-                float cb, cr;
-                sample_chroma(chroma, centre.x + (u - kHalf) * step, y, cb, cr);
-                f[1 + kOrientations] = (cb - u_mean) * chroma_scale;
-                f[2 + kOrientations] = (cr - v_mean) * chroma_scale;
+                f[1 + kOrientations] = (cb_[i] - u_mean) * chroma_scale;
+                f[2 + kOrientations] = (cr_[i] - v_mean) * chroma_scale;
             }
             for (int p = 0; p < pairs; ++p) pairs_[p][i] = {w * f[2 * p], w * f[2 * p + 1]};
         }

@@ -81,6 +81,7 @@ private:
     std::array<float, kSize> hann_{};
     std::array<float, kOrientations> cos2_{}, sin2_{};  // cos 2θ_k and sin 2θ_k of each orientation bin
     Plane grey_{}, gx_{}, gy_{}, magnitude_{};  // the window's samples and their gradient
+    Plane cb_{}, cr_{};                         // ... and their colour (colour sources)
     std::array<Complex, kSize> ramp_u_{}, ramp_v_{};
     Point window_centre_;  // where the last transformed window was centred
     bool window_colour_ = false;  // ... and whether it had chroma channels

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace rays {
 namespace {
@@ -22,25 +23,34 @@ int AppearanceModel::bin(const GreyImage& luma, const Chroma& chroma, int i, int
 }
 
 void AppearanceModel::fill_inside(const Contour& contour, int j0, int j1) {
+    // Each edge's crossings of the cell rows' centre lines y = 2j + 0.5 it spans, in edge order.
+    std::fill(crossing_count_.begin(), crossing_count_.begin() + (j1 - j0 + 1), 0);
     const int n = contour.size;
+    for (int k = 0, prev = n - 1; k < n; prev = k++) {
+        const Point& a = contour.points[k].p;
+        const Point& b = contour.points[prev].p;
+        const double low = std::min(a.y, b.y), high = std::max(a.y, b.y);
+        const int first = std::max(j0, static_cast<int>(std::floor((low - 0.5) * 0.5)));
+        const int last = std::min(j1, static_cast<int>(std::ceil((high - 0.5) * 0.5)));
+        for (int j = first; j <= last; ++j) {
+            const double yc = 2.0 * j + 0.5;
+            int& count = crossing_count_[static_cast<std::size_t>(j - j0)];
+            if ((a.y > yc) == (b.y > yc) || count == kMaxCrossings) continue;
+            crossings_[static_cast<std::size_t>((j - j0) * kMaxCrossings + count++)] =
+                static_cast<float>(a.x + (yc - a.y) * (b.x - a.x) / (b.y - a.y));
+        }
+    }
     for (int j = j0; j <= j1; ++j) {
         unsigned char* row = &inside_[static_cast<std::size_t>(j * kChromaSize)];
         std::fill(row, row + kChromaSize, 0);
-        const double yc = 2.0 * j + 0.5;
-        int count = 0;
-        for (int k = 0, prev = n - 1; k < n; prev = k++) {
-            const Point& a = contour.points[k].p;
-            const Point& b = contour.points[prev].p;
-            if ((a.y > yc) == (b.y > yc) || count == kMaxCrossings) continue;
-            const float x = static_cast<float>(a.x + (yc - a.y) * (b.x - a.x) / (b.y - a.y));
-            int at = count++;  // insertion sort: a row crosses a contour a few times
-            for (; at > 0 && crossings_[at - 1] > x; --at) crossings_[at] = crossings_[at - 1];
-            crossings_[at] = x;
-        }
+        float* x = &crossings_[static_cast<std::size_t>((j - j0) * kMaxCrossings)];
+        const int count = crossing_count_[static_cast<std::size_t>(j - j0)];
+        for (int c = 1; c < count; ++c)  // insertion sort: a row crosses a contour a few times
+            for (int at = c; at > 0 && x[at - 1] > x[at]; --at) std::swap(x[at - 1], x[at]);
         for (int c = 0; c + 1 < count; c += 2) {
             // Cells whose centre 2i + 0.5 lies between the two crossings.
-            const int from = std::max(0, static_cast<int>(std::ceil((crossings_[c] - 0.5f) * 0.5f)));
-            const int to = std::min(kChromaSize - 1, static_cast<int>(std::floor((crossings_[c + 1] - 0.5f) * 0.5f)));
+            const int from = std::max(0, static_cast<int>(std::ceil((x[c] - 0.5f) * 0.5f)));
+            const int to = std::min(kChromaSize - 1, static_cast<int>(std::floor((x[c + 1] - 0.5f) * 0.5f)));
             for (int i = from; i <= to; ++i) row[i] = 1;
         }
     }

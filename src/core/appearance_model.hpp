@@ -91,10 +91,11 @@ private:
     std::array<bool, kBins> odds_known_{};              // ... where known since the last blend
     std::array<float, kBins> new_target_{}, new_background_{};
     std::array<unsigned char, kChromaPixels> inside_{};
-    // One scan line's crossings of the contour; a line that crosses it more often (a contour jagged
+    // Each scan line's crossings of the contour; a line that crosses it more often (a contour jagged
     // beyond any target's) is filled as far as these reach.
     static constexpr int kMaxCrossings = 64;
-    std::array<float, kMaxCrossings> crossings_{};
+    std::array<float, kChromaSize * kMaxCrossings> crossings_{};
+    std::array<int, kChromaSize> crossing_count_{};
     bool valid_ = false;
 };
 

@@ -27,6 +27,8 @@ float blend4(const float* r0, int stride, float fx, float fy) {
     return top + fy * (bottom - top);
 }
 
+int floor_half(int n) { return n >= 0 ? n / 2 : -((1 - n) / 2); }  // ⌊n / 2⌋ for any sign
+
 bool on_image(double x, double y) { return x >= 0.0 && y >= 0.0 && x <= kFrameSize - 1 && y <= kFrameSize - 1; }
 
 }  // namespace
@@ -108,19 +110,27 @@ Point MotionLayers::match_shift(const FloatImage& now, const FloatImage& before,
 
 void MotionLayers::sample_cells(const FloatImage& image, Point shift, CellPlane& out, std::array<bool, kChromaPixels>& off) {
     // Cell (i, j)'s centre 2i + 0.5 moved back by the shift lies in pixel column 2i + ox, at fx
-    // beyond it: the same ox and fx for every cell (and likewise for rows).
+    // beyond it: the same ox and fx for every cell (and likewise for rows). So the cells on the
+    // image are a rectangle: columns i_from … i_to of rows whose pixel row is on it.
     const double bx = 0.5 - shift.x, by = 0.5 - shift.y;
     const int ox = static_cast<int>(std::floor(bx)), oy = static_cast<int>(std::floor(by));
     const auto fx = static_cast<float>(bx - ox), fy = static_cast<float>(by - oy);
+    // 0 ≤ 2i + ox ≤ kFrameSize − 2
+    const int i_from = std::clamp(floor_half(1 - ox), 0, kChromaSize);              // ⌈−ox / 2⌉
+    const int i_to = std::clamp(floor_half(kFrameSize - 2 - ox), -1, kChromaSize - 1);
     for (int j = 0; j < kChromaSize; ++j) {
         const int y = 2 * j + oy;
-        for (int i = 0; i < kChromaSize; ++i) {
-            const int x = 2 * i + ox;
-            const auto c = static_cast<std::size_t>(j * kChromaSize + i);
-            off[c] = x < 0 || y < 0 || x > kFrameSize - 2 || y > kFrameSize - 2;
-            if (off[c]) continue;
-            out[c] = blend4(image.row(y) + x, kFrameSize, fx, fy);
+        bool* off_row = off.data() + j * kChromaSize;
+        if (y < 0 || y > kFrameSize - 2) {
+            std::fill(off_row, off_row + kChromaSize, true);
+            continue;
         }
+        std::fill(off_row, off_row + kChromaSize, false);
+        for (int i = 0; i < i_from; ++i) off_row[i] = true;
+        for (int i = i_to + 1; i < kChromaSize; ++i) off_row[i] = true;
+        const float* row = image.row(y);
+        float* cells = out.data() + j * kChromaSize;
+        for (int i = i_from; i <= i_to; ++i) cells[i] = blend4(row + 2 * i + ox, kFrameSize, fx, fy);
     }
 }
 

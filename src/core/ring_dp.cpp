@@ -177,21 +177,32 @@ void RingDp::open_first_order(double alpha, int* states) {
     for (int s = 0; s < states_[0]; ++s) value[s] = unary(0, s);
     for (int t = 1; t < m; ++t) {
         const float a = static_cast<float>(alpha) / gap_[t - 1];
+        const int nq = states_[t];
         unsigned char* back = &back_[static_cast<std::size_t>(t) * stride];
-        for (int q = 0; q < states_[t]; ++q) {
-            const float lq = lam(t, q);
-            float best = kInf;
-            int arg = 0;
-            for (int p = 0; p < states_[t - 1]; ++p) {
-                const float d = lq - lam(t - 1, p);
-                const float v = value[p] + std::min(a * d * d, std::max(cap(t, q), cap(t - 1, p)));  // eq. 9, α term
-                if (v < best) {
-                    best = v;
-                    arg = p;
-                }
+        // This node's states in vector lanes, as in the closed chain: the best previous state p for
+        // each, the first p on a tie.
+        for (int k = 0; k * kLanes < nq; ++k) {
+            Lanes lq{}, cq{};
+            for (int l = 0; l < kLanes && k * kLanes + l < nq; ++l) {
+                lq[l] = lam(t, k * kLanes + l);
+                cq[l] = cap(t, k * kLanes + l);
             }
-            next[q] = best + unary(t, q);
-            back[q] = static_cast<unsigned char>(arg);
+            Lanes best = kInf + Lanes{};
+            LaneIndex arg = LaneIndex{};
+            for (int p = 0; p < states_[t - 1]; ++p) {
+                const Lanes d = lq - lam(t - 1, p);
+                const float cap_p = cap(t - 1, p);
+                const Lanes bound = cq > cap_p ? cq : cap_p;
+                const Lanes alpha_term = a * d * d;
+                const Lanes v = value[p] + (bound < alpha_term ? bound : alpha_term);  // eq. 9, α term
+                const LaneIndex better = v < best;
+                best = better ? v : best;
+                arg = better ? p : arg;
+            }
+            for (int l = 0; l < kLanes && k * kLanes + l < nq; ++l) {
+                next[k * kLanes + l] = best[l] + unary(t, k * kLanes + l);
+                back[k * kLanes + l] = static_cast<unsigned char>(arg[l]);
+            }
         }
         std::swap(value, next);
     }

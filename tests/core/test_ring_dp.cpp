@@ -87,6 +87,20 @@ struct Weights {
 // smoothness terms are comparable to the unary costs; β = 0 included.
 constexpr Weights kWeights[] = {{1e-4, 0.0}, {1e-3, 0.0}, {5e-3, 0.0}, {1e-3, 1e-5}, {1e-3, 1e-4}, {0.0, 1e-4}};
 
+// Solves a ring loaded into `dp` (one with more joint states than kEnumerateLimit takes the
+// three-pass path), checks the states and the energy it reports, and returns how far that energy
+// is above the brute-force optimum, relative: (E_dp − E_opt) / |E_opt|, never below 0.
+double excess_over_brute_force(RingDp& dp, const Ring& ring, const Weights& w) {
+    std::vector<int> states(ring.nodes, -1);
+    const double e = dp.solve(w.alpha, w.beta, states.data());
+    for (int i = 0; i < ring.nodes; ++i) REQUIRE((states[i] >= 0 && states[i] < ring.states[i]));
+    REQUIRE(dp.energy(w.alpha, w.beta, states.data()) == Approx(e).epsilon(1e-9).margin(1e-9));
+    const double opt = brute_force(dp, ring, w.alpha, w.beta);
+    const double excess = (e - opt) / std::abs(opt);
+    REQUIRE(excess >= -1e-9);
+    return excess;
+}
+
 }  // namespace
 
 TEST_CASE("RingDp equals brute force on rings it enumerates", "[ring_dp]") {
@@ -135,13 +149,7 @@ TEST_CASE("RingDp three-pass solution stays close to brute force on larger rings
         if (ring.joint() <= kEnumerateLimit || ring.joint() > 40000) continue;
         load(dp, ring);
         const Weights& w = kWeights[static_cast<std::size_t>(cases) % std::size(kWeights)];
-        std::vector<int> states(ring.nodes, -1);
-        const double e = dp.solve(w.alpha, w.beta, states.data());
-        for (int i = 0; i < ring.nodes; ++i) REQUIRE((states[i] >= 0 && states[i] < ring.states[i]));
-        REQUIRE(dp.energy(w.alpha, w.beta, states.data()) == Approx(e).epsilon(1e-9).margin(1e-9));
-        const double opt = brute_force(dp, ring, w.alpha, w.beta);
-        const double excess = (e - opt) / std::abs(opt);
-        REQUIRE(excess >= -1e-9);
+        const double excess = excess_over_brute_force(dp, ring, w);
         if (excess <= 1e-6) ++exact;
         double& worst = w.alpha <= 1e-3 && w.beta <= 1e-5 ? worst_moderate : worst_strong;
         worst = std::max(worst, excess);
@@ -169,12 +177,7 @@ TEST_CASE("RingDp three-pass solution stays close to brute force with the jump c
         if (ring.joint() <= kEnumerateLimit || ring.joint() > 40000) continue;
         load(dp, ring, -1);
         const Weights& w = kWeights[static_cast<std::size_t>(cases) % std::size(kWeights)];
-        std::vector<int> states(ring.nodes, -1);
-        const double e = dp.solve(w.alpha, w.beta, states.data());
-        REQUIRE(dp.energy(w.alpha, w.beta, states.data()) == Approx(e).epsilon(1e-9).margin(1e-9));
-        const double opt = brute_force(dp, ring, w.alpha, w.beta);
-        const double excess = (e - opt) / std::abs(opt);
-        REQUIRE(excess >= -1e-9);
+        const double excess = excess_over_brute_force(dp, ring, w);
         if (excess <= 1e-6) ++exact;
         worst = std::max(worst, excess);
         ++cases;
@@ -200,13 +203,7 @@ TEST_CASE("RingDp three-pass solution holds with more states than one vector's l
         dp.set_jump_cost(cases % 2 == 0 ? 0.0 : 0.05);
         load(dp, ring, -1);
         const Weights& w = kWeights[static_cast<std::size_t>(cases) % std::size(kWeights)];
-        std::vector<int> states(ring.nodes, -1);
-        const double e = dp.solve(w.alpha, w.beta, states.data());
-        for (int i = 0; i < ring.nodes; ++i) REQUIRE((states[i] >= 0 && states[i] < ring.states[i]));
-        REQUIRE(dp.energy(w.alpha, w.beta, states.data()) == Approx(e).epsilon(1e-9).margin(1e-9));
-        const double opt = brute_force(dp, ring, w.alpha, w.beta);
-        const double excess = (e - opt) / std::abs(opt);
-        REQUIRE(excess >= -1e-9);
+        const double excess = excess_over_brute_force(dp, ring, w);
         if (excess <= 1e-6) ++exact;
         worst = std::max(worst, excess);
         ++cases;

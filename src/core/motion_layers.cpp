@@ -139,15 +139,13 @@ void MotionLayers::add_moved(Point shift, float keep, CellPlane& out) const {
     const double bu = -0.5 * shift.x, bv = -0.5 * shift.y;
     const int ou = static_cast<int>(std::floor(bu)), ov = static_cast<int>(std::floor(bv));
     const auto fu = static_cast<float>(bu - ou), fv = static_cast<float>(bv - ov);
-    for (int j = 0; j < kChromaSize; ++j) {
-        const int v = j + ov;
-        if (v < 0 || v > kChromaSize - 2) continue;
-        for (int i = 0; i < kChromaSize; ++i) {
-            const int u = i + ou;
-            if (u < 0 || u > kChromaSize - 2) continue;
-            const float* r0 = &map_.log_odds[static_cast<std::size_t>(v * kChromaSize + u)];
-            out[static_cast<std::size_t>(j * kChromaSize + i)] += keep * blend4(r0, kChromaSize, fu, fv);
-        }
+    // The cells whose source lies on the map: 0 ≤ i + ou ≤ kChromaSize − 2, likewise for j.
+    const int i_from = std::max(0, -ou), i_to = std::min(kChromaSize - 1, kChromaSize - 2 - ou);
+    const int j_from = std::max(0, -ov), j_to = std::min(kChromaSize - 1, kChromaSize - 2 - ov);
+    for (int j = j_from; j <= j_to; ++j) {
+        const float* source = &map_.log_odds[static_cast<std::size_t>((j + ov) * kChromaSize)];
+        float* cells = &out[static_cast<std::size_t>(j * kChromaSize)];
+        for (int i = i_from; i <= i_to; ++i) cells[i] += keep * blend4(source + i + ou, kChromaSize, fu, fv);
     }
 }
 

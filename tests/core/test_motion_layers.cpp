@@ -123,6 +123,32 @@ TEST_CASE("MotionLayers says nothing where the target and the view move alike", 
     CHECK(read(r.layers, {56.0, 67.0}).magnitude < 0.05);
 }
 
+TEST_CASE("MotionLayers moves its map by whole cells exactly and takes nothing from beyond the image", "[motion_layers]") {
+    Run r;
+    const Point target = r.run(6, {1.0, 0.0}, {-1.5, 0.5});
+    REQUIRE(r.layers.valid());
+    LikelihoodMap here, moved, gone;
+    r.layers.add_to(here, {0.0, 0.0});
+    // Moved 2 px (one cell) to the right: each cell holds its left neighbour's value; the first
+    // column, whose source is off the map, nothing.
+    r.layers.add_to(moved, {2.0, 0.0});
+    for (int j = 0; j < rays::kChromaSize; ++j) {
+        CHECK(moved.cell(0, j) == 0.0f);
+        for (int i = 1; i < rays::kChromaSize; ++i) REQUIRE(moved.cell(i, j) == here.cell(i - 1, j));
+    }
+    // Moved off the frame altogether: nothing anywhere.
+    r.layers.add_to(gone, {200.0, -200.0});
+    for (float v : gone.log_odds) REQUIRE(v == 0.0f);
+    // A view that moved beyond the image brings every place from off it: no evidence, so the map
+    // only moves with the target and forgets (bilinear moves never add to its total magnitude).
+    const double before = read(r.layers, target).magnitude;
+    r.layers.update(*r.before, *r.before, r.contour, {0.0, 0.0}, {200.0, 200.0});
+    const double after = read(r.layers, target).magnitude;
+    INFO("mean |log-odds| " << before << " -> " << after);
+    CHECK(before > 0.1);
+    CHECK(after <= 0.9 * before + 1e-6);
+}
+
 namespace {
 
 // Tracks the camouflaged target from its centre; the contours' mean overlap with the target over

@@ -101,6 +101,39 @@ double excess_over_brute_force(RingDp& dp, const Ring& ring, const Weights& w) {
     return excess;
 }
 
+struct Trials {
+    int cases = 0, exact = 0;                            // rings solved, and solved to the optimum
+    double worst_moderate = 0.0, worst_strong = 0.0;     // the largest excess under each kind of weights
+    double worst() const { return std::max(worst_moderate, worst_strong); }
+};
+
+// Draws rings of `nodes_from` … `nodes_to` nodes and `min_states` … `max_states` states each from
+// `seed`, keeps `count` of those whose joint states lie above kEnumerateLimit (the three-pass path)
+// and at most `max_joint`, and solves each with the weights of kWeights in turn and the jump cost
+// `jump(case)`, its edges all but each node's last state when `last_not_edge` (as the tracker sets
+// them), else none.
+template <typename Jump>
+Trials three_pass_trials(unsigned seed, int nodes_from, int nodes_to, int min_states, int max_states, long max_joint,
+                         int count, bool last_not_edge, Jump jump) {
+    std::mt19937 rng(seed);
+    RingDp dp(kMaxNodes, kMaxStates);
+    std::uniform_int_distribution<int> nodes(nodes_from, nodes_to);
+    Trials t;
+    while (t.cases < count) {
+        const Ring ring = random_ring(rng, nodes(rng), min_states, max_states);
+        if (ring.joint() <= kEnumerateLimit || ring.joint() > max_joint) continue;
+        dp.set_jump_cost(jump(t.cases));
+        load(dp, ring, last_not_edge ? -1 : 0);
+        const Weights& w = kWeights[static_cast<std::size_t>(t.cases) % std::size(kWeights)];
+        const double excess = excess_over_brute_force(dp, ring, w);
+        if (excess <= 1e-6) ++t.exact;
+        double& worst = w.alpha <= 1e-3 && w.beta <= 1e-5 ? t.worst_moderate : t.worst_strong;
+        worst = std::max(worst, excess);
+        ++t.cases;
+    }
+    return t;
+}
+
 }  // namespace
 
 TEST_CASE("RingDp equals brute force on rings it enumerates", "[ring_dp]") {
@@ -139,52 +172,22 @@ TEST_CASE("RingDp three-pass solution stays close to brute force on larger rings
     // with a worst excess of 0.74.) The bounds below leave a small margin over the measurement.
     constexpr double kMaxExcessModerate = 0.05;
     constexpr double kMaxExcessStrong = 0.2;
-    std::mt19937 rng(77u);
-    RingDp dp(kMaxNodes, kMaxStates);
-    std::uniform_int_distribution<int> nodes(8, 10);
-    int cases = 0, exact = 0;
-    double worst_moderate = 0, worst_strong = 0;
-    while (cases < 200) {
-        const Ring ring = random_ring(rng, nodes(rng), 2, 4);
-        if (ring.joint() <= kEnumerateLimit || ring.joint() > 40000) continue;
-        load(dp, ring);
-        const Weights& w = kWeights[static_cast<std::size_t>(cases) % std::size(kWeights)];
-        const double excess = excess_over_brute_force(dp, ring, w);
-        if (excess <= 1e-6) ++exact;
-        double& worst = w.alpha <= 1e-3 && w.beta <= 1e-5 ? worst_moderate : worst_strong;
-        worst = std::max(worst, excess);
-        ++cases;
-    }
-    INFO("exact in " << exact << "/" << cases << ", worst relative excess " << worst_moderate << " (moderate), "
-                     << worst_strong << " (strong)");
-    CHECK(exact >= 190);
-    CHECK(worst_moderate <= kMaxExcessModerate);
-    CHECK(worst_strong <= kMaxExcessStrong);
+    const Trials t = three_pass_trials(77u, 8, 10, 2, 4, 40000, 200, false, [](int) { return 0.0; });
+    INFO("exact in " << t.exact << "/" << t.cases << ", worst relative excess " << t.worst_moderate << " (moderate), "
+                     << t.worst_strong << " (strong)");
+    CHECK(t.exact >= 190);
+    CHECK(t.worst_moderate <= kMaxExcessModerate);
+    CHECK(t.worst_strong <= kMaxExcessStrong);
 }
 
 TEST_CASE("RingDp three-pass solution stays close to brute force with the jump cost", "[ring_dp]") {
     // As above, with the smoothness truncated at κ = 0.05 between edge states (every state but each
     // node's last, as the tracker sets it). Measured with this seed: exact in 198/200, worst relative
     // excess 0.0127. The bounds leave a small margin.
-    std::mt19937 rng(78u);
-    RingDp dp(kMaxNodes, kMaxStates);
-    dp.set_jump_cost(0.05);
-    std::uniform_int_distribution<int> nodes(8, 10);
-    int cases = 0, exact = 0;
-    double worst = 0;
-    while (cases < 200) {
-        const Ring ring = random_ring(rng, nodes(rng), 2, 4);
-        if (ring.joint() <= kEnumerateLimit || ring.joint() > 40000) continue;
-        load(dp, ring, -1);
-        const Weights& w = kWeights[static_cast<std::size_t>(cases) % std::size(kWeights)];
-        const double excess = excess_over_brute_force(dp, ring, w);
-        if (excess <= 1e-6) ++exact;
-        worst = std::max(worst, excess);
-        ++cases;
-    }
-    INFO("exact in " << exact << "/" << cases << ", worst relative excess " << worst);
-    CHECK(exact >= 190);
-    CHECK(worst <= 0.05);
+    const Trials t = three_pass_trials(78u, 8, 10, 2, 4, 40000, 200, true, [](int) { return 0.05; });
+    INFO("exact in " << t.exact << "/" << t.cases << ", worst relative excess " << t.worst());
+    CHECK(t.exact >= 190);
+    CHECK(t.worst() <= 0.05);
 }
 
 TEST_CASE("RingDp three-pass solution holds with more states than one vector's lanes", "[ring_dp]") {
@@ -192,25 +195,11 @@ TEST_CASE("RingDp three-pass solution holds with more states than one vector's l
     // states (K up to 7 edges and "no edge") take two groups of lanes, the last one partly filled.
     // Against brute force as above, with and without the jump cost. Measured with this seed: exact
     // in 95/100, worst relative excess 0.0091. The bounds leave a margin.
-    std::mt19937 rng(79u);
-    RingDp dp(kMaxNodes, kMaxStates);
-    std::uniform_int_distribution<int> nodes(5, 6);
-    int cases = 0, exact = 0;
-    double worst = 0;
-    while (cases < 100) {
-        const Ring ring = random_ring(rng, nodes(rng), 5, kMaxStates);
-        if (ring.joint() <= kEnumerateLimit || ring.joint() > 300000) continue;
-        dp.set_jump_cost(cases % 2 == 0 ? 0.0 : 0.05);
-        load(dp, ring, -1);
-        const Weights& w = kWeights[static_cast<std::size_t>(cases) % std::size(kWeights)];
-        const double excess = excess_over_brute_force(dp, ring, w);
-        if (excess <= 1e-6) ++exact;
-        worst = std::max(worst, excess);
-        ++cases;
-    }
-    INFO("exact in " << exact << "/" << cases << ", worst relative excess " << worst);
-    CHECK(exact >= 90);
-    CHECK(worst <= 0.05);
+    const Trials t = three_pass_trials(79u, 5, 6, 5, kMaxStates, 300000, 100, true,
+                                       [](int c) { return c % 2 == 0 ? 0.0 : 0.05; });
+    INFO("exact in " << t.exact << "/" << t.cases << ", worst relative excess " << t.worst());
+    CHECK(t.exact >= 90);
+    CHECK(t.worst() <= 0.05);
 }
 
 namespace {

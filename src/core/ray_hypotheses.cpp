@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/ray_sampler.hpp"
+
 namespace rays {
 namespace {
 
@@ -13,15 +15,19 @@ constexpr float kForegroundReachPx = 2.0f;  // the foreground is read this far i
 constexpr float kRimStep = 0.5f;            // an edge whose foreground drops this much is a rim
 constexpr float kSplitReachPx = 1.5f;       // an edge this near the colour split stands for it
 
+// Room for `samples` rounded up to whole groups of the sampler's lanes.
+std::size_t padded(int samples) { return static_cast<std::size_t>((samples + kLanes - 1) / kLanes * kLanes); }
+
 }  // namespace
 
 RayProfiler::RayProfiler(const TrackerCapacity& capacity)
-    : profile_(capacity.max_samples),
+    : profile_(padded(capacity.max_samples)),
       grad_(capacity.max_samples),
       prefix_(capacity.max_samples + 1),
       prefix_sq_(capacity.max_samples + 1),
       foreground_step_(capacity.max_samples),
       rank_(capacity.max_samples),
+      log_odds_(padded(capacity.max_samples)),
       log_odds_sum_(capacity.max_samples + 1),
       candidates_(capacity.max_samples) {}
 
@@ -49,27 +55,21 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
     if (s < -1e-9) reach = std::min(reach, -m.y / s);
     const int n = std::clamp(static_cast<int>(std::floor((reach - lambda_min_) / step_ + 1e-6)) + 1, 0, samples_);
     const float cx = static_cast<float>(c), sy = static_cast<float>(s);
-    // eq. 6: ρ_m(φ, λ) = f(x_m + λ cos φ, y_m + λ sin φ), bilinear. `reach` keeps every sample
-    // inside the image; the cell is clamped so that rounding at the far border cannot leave it.
+    // eq. 6, bilinear; `reach` keeps every sample inside the image.
     const float x_first = static_cast<float>(m.x) + lambda_min_ * cx, y_first = static_cast<float>(m.y) + lambda_min_ * sy;
     const float dx = step_ * cx, dy = step_ * sy;
-    float x = x_first, y = y_first;
-    float sum = 0.0f, sum_sq = 0.0f, log_odds = 0.0f;  // the running sums, in registers
+    sample_ray(image, likelihood, x_first, y_first, dx, dy, n, profile_.data(), log_odds_.data());
+    float sum = 0.0f, sum_sq = 0.0f;  // the running sums, in registers
     prefix_[0] = prefix_sq_[0] = log_odds_sum_[0] = 0.0f;
-    for (int j = 0; j < n; ++j, x += dx, y += dy) {
-        // With colour: the running sum of the log-odds the colour split is found from (below).
-        if (likelihood != nullptr) log_odds_sum_[j + 1] = log_odds += likelihood->at(x, y);
-        const int x0 = std::clamp(static_cast<int>(x), 0, kFrameSize - 2);
-        const int y0 = std::clamp(static_cast<int>(y), 0, kFrameSize - 2);
-        const float fx = x - static_cast<float>(x0), fy = y - static_cast<float>(y0);
-        const float* r0 = image.row(y0) + x0;
-        const float* r1 = r0 + kFrameSize;
-        const float top = r0[0] + fx * (r0[1] - r0[0]);
-        const float bottom = r1[0] + fx * (r1[1] - r1[0]);
-        const float v = top + fy * (bottom - top);
-        profile_[j] = v;
+    for (int j = 0; j < n; ++j) {
+        const float v = profile_[j];
         prefix_[j + 1] = sum += v;  // running sums make the region term O(1) per hypothesis
         prefix_sq_[j + 1] = sum_sq += v * v;
+    }
+    // With colour: the running sum of the log-odds the colour split is found from (below).
+    if (likelihood != nullptr) {
+        float log_odds = 0.0f;
+        for (int j = 0; j < n; ++j) log_odds_sum_[j + 1] = log_odds += log_odds_[j];
     }
     lambda_end = lambda_min_ + static_cast<float>(std::max(0, n - 1)) * step_;
     shot_samples_ = n;

@@ -53,7 +53,7 @@ private:
     int shot_samples_ = 0, split_ = -1;  // the last shoot()'s samples and colour split (-1: none)
     int k_ = 0;
     float lambda_min_ = 0, step_ = 1, floor_ = 0, separation_ = 0;
-    std::vector<float> profile_, grad_, prefix_, prefix_sq_, foreground_step_, rank_, log_odds_sum_;
+    std::vector<float> profile_, grad_, prefix_, prefix_sq_, foreground_step_, rank_, log_odds_, log_odds_sum_;
     std::vector<int> candidates_;
 };
 

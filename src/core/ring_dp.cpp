@@ -4,18 +4,17 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/lanes.hpp"
+
 namespace rays {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr long kEnumerateLimit = 4096;  // rings with fewer joint states are solved by enumeration
 constexpr int kMaxStatesFast = 256;     // states per node the chain's scratch holds (back pointers are bytes)
-// The closed chain's innermost loop runs over the next node's states in vector lanes (GCC's vector
-// extension: SSE on x86-64, NEON on arm64); four lanes hold the usual K = 3 edges and "no edge".
-constexpr int kLanes = 4;
+// The closed chain's innermost loop runs over the next node's states in vector lanes (lanes.hpp);
+// four lanes hold the usual K = 3 edges and "no edge".
 constexpr int kMaxChunks = (kMaxStatesFast + kLanes - 1) / kLanes;
-using Lanes = float __attribute__((vector_size(kLanes * sizeof(float))));
-using LaneIndex = int __attribute__((vector_size(kLanes * sizeof(int))));
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/ray_sampler.hpp"
 
@@ -22,13 +23,13 @@ std::size_t padded(int samples) { return static_cast<std::size_t>((samples + kLa
 
 RayProfiler::RayProfiler(const TrackerCapacity& capacity)
     : profile_(padded(capacity.max_samples)),
-      grad_(capacity.max_samples),
+      grad_(capacity.max_samples + kLanes),
       prefix_(capacity.max_samples + 1),
       prefix_sq_(capacity.max_samples + 1),
       foreground_step_(capacity.max_samples),
       rank_(capacity.max_samples),
       log_odds_(padded(capacity.max_samples)),
-      log_odds_sum_(capacity.max_samples + 1),
+      log_odds_sum_(capacity.max_samples + 1 + kLanes),
       candidates_(capacity.max_samples) {}
 
 bool RayProfiler::configure(const RaysTunables& t) {
@@ -91,11 +92,16 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
         return at(std::max(0, j - fg_reach)) - at(std::min(n - 1, j + fg_reach));
     };
     const int first = std::max(1, static_cast<int>(std::ceil((lambda_from - lambda_min_) / step_ - 1e-6f)));
-    // Without branches: whether a sample is a maximum is as good as random, a branch on it mispredicted.
-    for (int j = first; j < n - 1; ++j) {
-        const float a = std::abs(grad_[j]);
-        candidates_[nc] = j;
-        nc += static_cast<int>((a >= floor_) & (a >= std::abs(grad_[j - 1])) & (a > std::abs(grad_[j + 1])));
+    // Without branches, four samples at a time: whether a sample is a maximum is as good as random,
+    // a branch on it mispredicted. Each is written as the next candidate and counted where it is one.
+    for (int j = first; j < n - 1; j += kLanes) {
+        const Lanes a = abs_lanes(load_lanes(&grad_[j]));
+        const LaneIndex maximum = (a >= floor_) & (a >= abs_lanes(load_lanes(&grad_[j - 1]))) &
+                                  (a > abs_lanes(load_lanes(&grad_[j + 1]))) & (j + kLaneOffsets < n - 1);
+        for (int l = 0; l < kLanes; ++l) {
+            candidates_[nc] = j + l;
+            nc -= maximum[l];  // a true lane is −1
+        }
     }
     for (int ci = 0; ci < nc; ++ci) {
         const int j = candidates_[ci];
@@ -120,12 +126,24 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
     // Its nearest edge candidate goes first; with none near, the split itself is a hypothesis.
     int split = -1;
     if (likelihood != nullptr) {
-        split = first;  // boundary b: between samples b − 1 and b
-        float most = log_odds_sum_[first];
-        for (int b = first; b <= n; ++b) {
-            const bool more = log_odds_sum_[b] > most;
-            most = more ? log_odds_sum_[b] : most;
-            split = more ? b : split;
+        // Boundary b lies between samples b − 1 and b; the first b where S(b) is largest, found lane
+        // by lane (each lane's first largest), then the earliest of the lanes' where they tie.
+        Lanes most = -std::numeric_limits<float>::infinity() + Lanes{};
+        LaneIndex at{};
+        for (int b = first; b <= n; b += kLanes) {
+            const LaneIndex index = b + kLaneOffsets;
+            const Lanes s_b = index <= n ? load_lanes(&log_odds_sum_[b]) : most;
+            const LaneIndex more = s_b > most;
+            most = more ? s_b : most;
+            at = more ? index : at;
+        }
+        split = first;  // (a ray that ends before `first` keeps that)
+        if (first <= n) {
+            float top = most[0];
+            for (int l = 1; l < kLanes; ++l) top = std::max(top, most[l]);
+            split = n;
+            for (int l = 0; l < kLanes; ++l)
+                if (most[l] == top) split = std::min(split, at[l]);
         }
         const auto half_steps = [&](int j) { return std::abs(2 * j + 1 - 2 * split); };  // edge j to the split
         int near = -1;

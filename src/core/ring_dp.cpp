@@ -2,6 +2,7 @@
 #include "core/ring_dp.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 #include "core/lanes.hpp"
@@ -11,25 +12,25 @@ namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr long kEnumerateLimit = 4096;  // rings with fewer joint states are solved by enumeration
-constexpr int kMaxStatesFast = 256;     // states per node the chain's scratch holds (back pointers are bytes)
-// The closed chain's innermost loop runs over the next node's states in vector lanes (lanes.hpp);
-// four lanes hold the usual K = 3 edges and "no edge".
-constexpr int kMaxChunks = (kMaxStatesFast + kLanes - 1) / kLanes;
+// The chains' innermost loops run over a node's states in vector lanes (lanes.hpp); four lanes
+// hold the usual K = 3 edges and "no edge". Back pointers are bytes (a node has at most 256 states;
+// the configuration allows 33), a lane group's stored at once.
+using LaneBytes = unsigned char __attribute__((vector_size(kLanes)));
 
 }  // namespace
 
 RingDp::RingDp(int max_nodes, int max_states)
     : max_nodes_(max_nodes),
-      max_states_(max_states),
-      lam_(static_cast<std::size_t>(max_nodes) * max_states),
+      stride_((max_states + kLanes - 1) / kLanes * kLanes),
+      lam_(static_cast<std::size_t>(max_nodes) * stride_),
       unary_(lam_.size()),
       gap_(max_nodes),
       states_(max_nodes),
       capped_(max_nodes),
       caps_{kInf, kInf},
-      value_(static_cast<std::size_t>(max_states) * max_states),
+      value_(static_cast<std::size_t>(stride_) * stride_),
       next_value_(value_.size()),
-      back_(static_cast<std::size_t>(max_nodes) * max_states * max_states),
+      back_(static_cast<std::size_t>(max_nodes) * stride_ * stride_),
       scratch_(max_nodes) {}
 
 void RingDp::set_jump_cost(double kappa) { caps_[1] = kappa > 0 ? static_cast<float>(kappa) : kInf; }
@@ -40,8 +41,8 @@ void RingDp::set_node(int i, int states, const float* lam, const float* unary, f
     states_[i] = states;
     capped_[i] = capped;
     for (int s = 0; s < states; ++s) {
-        lam_[i * max_states_ + s] = lam[s];
-        unary_[i * max_states_ + s] = unary[s];
+        lam_[i * stride_ + s] = lam[s];
+        unary_[i * stride_ + s] = unary[s];
     }
     gap_[i] = gap_to_next;
 }
@@ -79,7 +80,7 @@ double RingDp::enumerate(double alpha, double beta, int* states) {
 }
 
 double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, int* states) {
-    const int m = nodes_, stride = max_states_;
+    const int m = nodes_, stride = stride_;
     auto node = [&](int t) { return first + t < m ? first + t : first + t - m; };  // 0 ≤ t < m
     auto pair_cost = [&](int i, int si, int sj) {  // eq. 9, α term between node i and the next
         const int j = (i + 1) % m;
@@ -100,11 +101,11 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
         const float inv_gp = 1.0f / gp, inv_gc = 1.0f / gc, aw = static_cast<float>(alpha) * inv_gc;
         const int np = states_[prev], nr = states_[next];
         const int chunks = (nr + kLanes - 1) / kLanes;  // the next node's states, kLanes at a time
-        Lanes lam_next[kMaxChunks], cap_next[kMaxChunks];
-        for (int r = 0; r < chunks * kLanes; ++r) {
-            lam_next[r / kLanes][r % kLanes] = r < nr ? lam(next, r) : 0.0f;
-            cap_next[r / kLanes][r % kLanes] = r < nr ? cap(next, r) : 0.0f;
-        }
+        // Its λ, unary and caps by whole lane groups (lanes past its states carry what they carry:
+        // their results are never read).
+        const float* lam_next = &lam_[static_cast<std::size_t>(next) * stride];
+        const float* unary_next = &unary_[static_cast<std::size_t>(next) * stride];
+        const int capped_next = capped_[next];
         unsigned char* back = &back_[static_cast<std::size_t>(t + 1) * stride * stride];
         for (int q = 0; q < states_[cur]; ++q) {
             const float lq = lam(cur, q);
@@ -112,8 +113,10 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
             // Every state r of the next node at once, in vector lanes: the best previous state p for
             // (q, r), the first p on a tie.
             for (int k = 0; k < chunks; ++k) {
-                const Lanes slope_out = (lam_next[k] - lq) * inv_gc;
-                const Lanes cap_qr = cap_next[k] > cq ? cap_next[k] : cq;
+                const Lanes lam_r = load_lanes(lam_next + k * kLanes);
+                const Lanes cap_r = k * kLanes + kLaneOffsets < capped_next ? caps_[1] : caps_[0];
+                const Lanes slope_out = (lam_r - lq) * inv_gc;
+                const Lanes cap_qr = cap_r > cq ? cap_r : cq;
                 Lanes best = kInf + Lanes{};
                 LaneIndex arg = LaneIndex{};
                 for (int p = 0; p < np; ++p) {
@@ -127,14 +130,12 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
                     best = better ? v : best;
                     arg = better ? p : arg;
                 }
-                const Lanes step = lam_next[k] - lq;
+                const Lanes step = lam_r - lq;
                 const Lanes alpha_term = aw * step * step;
                 const Lanes through = best + (cap_qr < alpha_term ? cap_qr : alpha_term);  // eq. 9, α term
-                for (int l = 0; l < kLanes && k * kLanes + l < nr; ++l) {
-                    const int r = k * kLanes + l;
-                    next_value_[q * stride + r] = through[l] + unary(next, r);
-                    back[q * stride + r] = static_cast<unsigned char>(arg[l]);
-                }
+                store_lanes(&next_value_[q * stride + k * kLanes], through + load_lanes(unary_next + k * kLanes));
+                const auto arg_bytes = __builtin_convertvector(arg, LaneBytes);
+                std::memcpy(&back[q * stride + k * kLanes], &arg_bytes, sizeof arg_bytes);
             }
         }
         std::swap(value_, next_value_);
@@ -170,7 +171,7 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
 }
 
 void RingDp::open_first_order(double alpha, int* states) {
-    const int m = nodes_, stride = max_states_;
+    const int m = nodes_, stride = stride_;
     float* value = value_.data();  // V(s_t) for the chain so far
     float* next = next_value_.data();
     for (int s = 0; s < states_[0]; ++s) value[s] = unary(0, s);
@@ -178,14 +179,11 @@ void RingDp::open_first_order(double alpha, int* states) {
         const float a = static_cast<float>(alpha) / gap_[t - 1];
         const int nq = states_[t];
         unsigned char* back = &back_[static_cast<std::size_t>(t) * stride];
-        // This node's states in vector lanes, as in the closed chain: the best previous state p for
-        // each, the first p on a tie.
+        // This node's states in vector lanes, as in the closed chain (lanes past its states carry
+        // what they carry: never read): the best previous state p for each, the first p on a tie.
         for (int k = 0; k * kLanes < nq; ++k) {
-            Lanes lq{}, cq{};
-            for (int l = 0; l < kLanes && k * kLanes + l < nq; ++l) {
-                lq[l] = lam(t, k * kLanes + l);
-                cq[l] = cap(t, k * kLanes + l);
-            }
+            const Lanes lq = load_lanes(&lam_[static_cast<std::size_t>(t) * stride + k * kLanes]);
+            const Lanes cq = k * kLanes + kLaneOffsets < capped_[t] ? caps_[1] : caps_[0];
             Lanes best = kInf + Lanes{};
             LaneIndex arg = LaneIndex{};
             for (int p = 0; p < states_[t - 1]; ++p) {
@@ -198,10 +196,9 @@ void RingDp::open_first_order(double alpha, int* states) {
                 best = better ? v : best;
                 arg = better ? p : arg;
             }
-            for (int l = 0; l < kLanes && k * kLanes + l < nq; ++l) {
-                next[k * kLanes + l] = best[l] + unary(t, k * kLanes + l);
-                back[k * kLanes + l] = static_cast<unsigned char>(arg[l]);
-            }
+            store_lanes(next + k * kLanes, best + load_lanes(&unary_[static_cast<std::size_t>(t) * stride + k * kLanes]));
+            const auto arg_bytes = __builtin_convertvector(arg, LaneBytes);
+            std::memcpy(back + k * kLanes, &arg_bytes, sizeof arg_bytes);
         }
         std::swap(value, next);
     }

@@ -53,13 +53,14 @@ private:
     double enumerate(double alpha, double beta, int* states);
     // The link i → i+1 (from ≤ i < to, taken round the ring) with the least α term under the states.
     int smoothest_link(double alpha, const int* states, int from, int to) const;
-    float lam(int node, int s) const { return lam_[node * max_states_ + s]; }
-    float unary(int node, int s) const { return unary_[node * max_states_ + s]; }
+    float lam(int node, int s) const { return lam_[node * stride_ + s]; }
+    float unary(int node, int s) const { return unary_[node * stride_ + s]; }
     // The most a smoothness term may charge as far as state s of `node` is concerned.
     // A table, not a branch: which states are edges is as good as random to a branch predictor.
     float cap(int node, int s) const { return caps_[s < capped_[node]]; }
 
-    int max_nodes_, max_states_;
+    int max_nodes_;
+    int stride_;  // room for a node's states: the most it may have, in whole groups of vector lanes
     int nodes_ = 0;
     std::vector<float> lam_, unary_, gap_;
     std::vector<int> states_, capped_;

@@ -31,6 +31,8 @@ RingDp::RingDp(int max_nodes, int max_states)
       value_(static_cast<std::size_t>(stride_) * stride_),
       next_value_(value_.size()),
       back_(static_cast<std::size_t>(max_nodes) * stride_ * stride_),
+      prev_lam_(stride_),
+      prev_cap_(stride_),
       scratch_(max_nodes) {}
 
 void RingDp::set_jump_cost(double kappa) { caps_[1] = kappa > 0 ? static_cast<float>(kappa) : kInf; }
@@ -107,9 +109,15 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
         const float* unary_next = &unary_[static_cast<std::size_t>(next) * stride];
         const int capped_next = capped_[next];
         unsigned char* back = &back_[static_cast<std::size_t>(t + 1) * stride * stride];
+        // The previous node's λ and caps, each in every lane, once for all its uses below.
+        for (int p = 0; p < np; ++p) {
+            prev_lam_[p] = lam(prev, p) + Lanes{};
+            prev_cap_[p] = cap(prev, p) + Lanes{};
+        }
         for (int q = 0; q < states_[cur]; ++q) {
             const float lq = lam(cur, q);
             const float cq = cap(cur, q);
+            const Lanes lq_lanes = lq + Lanes{};
             // Every state r of the next node at once, in vector lanes: the best previous state p for
             // (q, r), the first p on a tie.
             for (int k = 0; k < chunks; ++k) {
@@ -118,17 +126,16 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
                 const Lanes slope_out = (lam_r - lq) * inv_gc;
                 const Lanes cap_qr = cap_r > cq ? cap_r : cq;
                 Lanes best = kInf + Lanes{};
-                LaneIndex arg = LaneIndex{};
-                for (int p = 0; p < np; ++p) {
-                    const float slope_in = (lq - lam(prev, p)) * inv_gp;
+                LaneIndex arg{}, p_lanes{};
+                for (int p = 0; p < np; ++p, p_lanes += 1) {
+                    const Lanes slope_in = (lq_lanes - prev_lam_[p]) * inv_gp;
                     const Lanes d = slope_out - slope_in;
-                    const float cap_p = cap(prev, p);
-                    const Lanes bound = cap_qr > cap_p ? cap_qr : cap_p;
+                    const Lanes bound = cap_qr > prev_cap_[p] ? cap_qr : prev_cap_[p];
                     const Lanes beta_term = bw * d * d;
                     const Lanes v = value_[p * stride + q] + (bound < beta_term ? bound : beta_term);  // eq. 9, β term
                     const LaneIndex better = v < best;
                     best = better ? v : best;
-                    arg = better ? p : arg;
+                    arg = better ? p_lanes : arg;
                 }
                 const Lanes step = lam_r - lq;
                 const Lanes alpha_term = aw * step * step;

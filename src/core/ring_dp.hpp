@@ -22,6 +22,8 @@
 #include <limits>
 #include <vector>
 
+#include "core/lanes.hpp"
+
 namespace rays {
 
 class RingDp {
@@ -67,6 +69,7 @@ private:
     std::array<float, 2> caps_;  // what a term may charge: [0] a state that is not an edge (∞), [1] an edge (κ)
     std::vector<float> value_, next_value_;  // V(s_{i−1}, s_i), S² per step
     std::vector<unsigned char> back_;       // argmin s_{i−2} for each node and pair, M·S²
+    std::vector<Lanes> prev_lam_, prev_cap_;  // the closed chain's previous node: λ and caps in every lane
     std::vector<int> scratch_;
 };
 

@@ -15,6 +15,9 @@ using LaneIndex = int __attribute__((vector_size(kLanes * sizeof(int))));
 
 inline constexpr LaneIndex kLaneOffsets = {0, 1, 2, 3};  // lane l of a group starting at j is j + l
 
+// Room for n values in whole groups of lanes: n rounded up to a multiple of kLanes.
+inline constexpr int whole_lanes(int n) { return (n + kLanes - 1) / kLanes * kLanes; }
+
 // kLanes floats from p on (no alignment needed).
 inline Lanes load_lanes(const float* p) {
     Lanes v;

@@ -16,19 +16,16 @@ constexpr float kForegroundReachPx = 2.0f;  // the foreground is read this far i
 constexpr float kRimStep = 0.5f;            // an edge whose foreground drops this much is a rim
 constexpr float kSplitReachPx = 1.5f;       // an edge this near the colour split stands for it
 
-// Room for `samples` rounded up to whole groups of the sampler's lanes.
-std::size_t padded(int samples) { return static_cast<std::size_t>((samples + kLanes - 1) / kLanes * kLanes); }
-
 }  // namespace
 
 RayProfiler::RayProfiler(const TrackerCapacity& capacity)
-    : profile_(padded(capacity.max_samples)),
+    : profile_(whole_lanes(capacity.max_samples)),
       grad_(capacity.max_samples + kLanes),
       prefix_(capacity.max_samples + 1),
       prefix_sq_(capacity.max_samples + 1),
       foreground_step_(capacity.max_samples),
       rank_(capacity.max_samples),
-      log_odds_(padded(capacity.max_samples)),
+      log_odds_(whole_lanes(capacity.max_samples)),
       log_odds_sum_(capacity.max_samples + 1 + kLanes),
       candidates_(capacity.max_samples) {}
 

@@ -21,7 +21,7 @@ using LaneBytes = unsigned char __attribute__((vector_size(kLanes)));
 
 RingDp::RingDp(int max_nodes, int max_states)
     : max_nodes_(max_nodes),
-      stride_((max_states + kLanes - 1) / kLanes * kLanes),
+      stride_(whole_lanes(max_states)),
       lam_(static_cast<std::size_t>(max_nodes) * stride_),
       unary_(lam_.size()),
       gap_(max_nodes),

@@ -68,7 +68,7 @@ TEST_CASE("sample_ray reads the grey and the colours' log-odds as the scalar rea
 
     int compared = 0;
     for (const Ray& ray : rays_to_test(rng)) {
-        const int room = (ray.n + rays::kLanes - 1) / rays::kLanes * rays::kLanes;
+        const int room = rays::whole_lanes(ray.n);
         std::vector<float> got_grey(static_cast<std::size_t>(room) + 1, -1.0f), got_odds(got_grey.size(), -1.0f);
         rays::sample_ray(*image, map.get(), ray.x, ray.y, ray.dx, ray.dy, ray.n, got_grey.data(), got_odds.data());
         float x = ray.x, y = ray.y;

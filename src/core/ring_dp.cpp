@@ -33,6 +33,7 @@ RingDp::RingDp(int max_nodes, int max_states)
       back_(static_cast<std::size_t>(max_nodes) * stride_ * stride_),
       prev_lam_(stride_),
       prev_cap_(stride_),
+      next_cap_(stride_ / kLanes),
       scratch_(max_nodes) {}
 
 void RingDp::set_jump_cost(double kappa) { caps_[1] = kappa > 0 ? static_cast<float>(kappa) : kInf; }
@@ -103,17 +104,18 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
         const float inv_gp = 1.0f / gp, inv_gc = 1.0f / gc, aw = static_cast<float>(alpha) * inv_gc;
         const int np = states_[prev], nr = states_[next];
         const int chunks = (nr + kLanes - 1) / kLanes;  // the next node's states, kLanes at a time
-        // Its λ, unary and caps by whole lane groups (lanes past its states carry what they carry:
+        // Its λ and unary costs by whole lane groups (lanes past its states carry what they carry:
         // their results are never read).
         const float* lam_next = &lam_[static_cast<std::size_t>(next) * stride];
         const float* unary_next = &unary_[static_cast<std::size_t>(next) * stride];
-        const int capped_next = capped_[next];
         unsigned char* back = &back_[static_cast<std::size_t>(t + 1) * stride * stride];
-        // The previous node's λ and caps, each in every lane, once for all its uses below.
+        // The previous node's λ and caps, each in every lane, and the next node's caps by lane
+        // groups, once for all their uses below.
         for (int p = 0; p < np; ++p) {
             prev_lam_[p] = lam(prev, p) + Lanes{};
             prev_cap_[p] = cap(prev, p) + Lanes{};
         }
+        for (int k = 0; k < chunks; ++k) next_cap_[k] = k * kLanes + kLaneOffsets < capped_[next] ? caps_[1] : caps_[0];
         for (int q = 0; q < states_[cur]; ++q) {
             const float lq = lam(cur, q);
             const float cq = cap(cur, q);
@@ -122,7 +124,7 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
             // (q, r), the first p on a tie.
             for (int k = 0; k < chunks; ++k) {
                 const Lanes lam_r = load_lanes(lam_next + k * kLanes);
-                const Lanes cap_r = k * kLanes + kLaneOffsets < capped_next ? caps_[1] : caps_[0];
+                const Lanes cap_r = next_cap_[k];
                 const Lanes slope_out = (lam_r - lq) * inv_gc;
                 const Lanes cap_qr = cap_r > cq ? cap_r : cq;
                 Lanes best = kInf + Lanes{};

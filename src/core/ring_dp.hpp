@@ -70,6 +70,7 @@ private:
     std::vector<float> value_, next_value_;  // V(s_{i−1}, s_i), S² per step
     std::vector<unsigned char> back_;       // argmin s_{i−2} for each node and pair, M·S²
     std::vector<Lanes> prev_lam_, prev_cap_;  // the closed chain's previous node: λ and caps in every lane
+    std::vector<Lanes> next_cap_;             // its next node's caps, by lane groups
     std::vector<int> scratch_;
 };
 

@@ -34,14 +34,17 @@ bool normalise(std::array<float, kFrameSize>& p) {
 std::optional<double> ViewMotion::best_shift(const Profile& before, const Profile& now) {
     // cost(s): mean squared difference where now(i) and before(i − s) overlap. Every shift's sum
     // runs over i in order, all shifts side by side: independent chains of adds, not one long one.
+    // Near the ends only some shifts overlap; in between all do, in a loop of fixed length.
     std::array<double, 2 * kMaxShiftPx + 1> cost{};
-    for (int i = 0; i < kFrameSize; ++i) {
-        const int s_from = std::max(-kMaxShiftPx, i - (kFrameSize - 1)), s_to = std::min(kMaxShiftPx, i);
+    auto add = [&](int i, int s_from, int s_to) {
         for (int s = s_from; s <= s_to; ++s) {
             const double d = now[i] - before[i - s];
             cost[s + kMaxShiftPx] += d * d;
         }
-    }
+    };
+    for (int i = 0; i < kMaxShiftPx; ++i) add(i, -kMaxShiftPx, i);
+    for (int i = kMaxShiftPx; i < kFrameSize - kMaxShiftPx; ++i) add(i, -kMaxShiftPx, kMaxShiftPx);
+    for (int i = kFrameSize - kMaxShiftPx; i < kFrameSize; ++i) add(i, i - (kFrameSize - 1), kMaxShiftPx);
     for (int s = -kMaxShiftPx; s <= kMaxShiftPx; ++s) cost[s + kMaxShiftPx] /= kFrameSize - std::abs(s);
     const int best = static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
     if (cost[best] > kMatchCost) return std::nullopt;

@@ -94,12 +94,9 @@ void filter_3x3(const Mask& src, Mask& tmp, Mask& dst, Combine combine) {
     for (int y = 0; y < kFrameSize; ++y) {
         const std::uint8_t* in = src.row(y);
         std::uint8_t* out = tmp.row(y);
-        for (int x = 0; x < kFrameSize; ++x) {
-            std::uint8_t v = in[x];
-            if (x > 0) v = combine(v, in[x - 1]);
-            if (x + 1 < kFrameSize) v = combine(v, in[x + 1]);
-            out[x] = v;
-        }
+        out[0] = combine(in[0], in[1]);
+        for (int x = 1; x + 1 < kFrameSize; ++x) out[x] = combine(combine(in[x], in[x - 1]), in[x + 1]);  // vectorises
+        out[kFrameSize - 1] = combine(in[kFrameSize - 1], in[kFrameSize - 2]);
     }
     for (int y = 0; y < kFrameSize; ++y) {
         const std::uint8_t* above = tmp.row(y > 0 ? y - 1 : y);

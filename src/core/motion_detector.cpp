@@ -44,8 +44,10 @@ double smoothed_difference(const GreyImage& previous, const GreyImage& current, 
     for (int y = 0; y < kFrameSize; ++y) {
         const float* in = difference.row(y);
         float* out = smoothed.row(y);
-        for (int x = 0; x < kFrameSize; ++x)
-            out[x] = 0.25f * in[x > 0 ? x - 1 : x] + 0.5f * in[x] + 0.25f * in[x + 1 < kFrameSize ? x + 1 : x];
+        constexpr int last = kFrameSize - 1;
+        out[0] = 0.25f * in[0] + 0.5f * in[0] + 0.25f * in[1];
+        for (int x = 1; x < last; ++x) out[x] = 0.25f * in[x - 1] + 0.5f * in[x] + 0.25f * in[x + 1];  // vectorises
+        out[last] = 0.25f * in[last - 1] + 0.5f * in[last] + 0.25f * in[last];
     }
     std::array<int, 256> histogram{};
     for (int y = 0; y < kFrameSize; ++y) {

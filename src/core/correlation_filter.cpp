@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/lanes.hpp"
+
 namespace rays {
 namespace {
 
@@ -191,24 +193,35 @@ void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma
         chroma_scale = 1.0f / std::max(kChromaFloor, static_cast<float>(spread));
     }
 
+    // The channels, four samples of a row at a time in vector lanes (lanes.hpp), each lane doing
+    // the scalar arithmetic.
     for (int v = 0; v < kN; ++v) {
-        for (int u = 0; u < kN; ++u) {
+        for (int u = 0; u < kN; u += kLanes) {
             const int i = v * kN + u;
-            const float w = hann_[u] * hann_[v];
-            std::array<float, 2 * kPairs> f{};
-            f[0] = (grey_[i] - mean) * grey_scale;
+            const Lanes w = load_lanes(&hann_[u]) * hann_[v];
+            std::array<Lanes, 2 * kPairs> f{};
+            f[0] = (load_lanes(&grey_[i]) - mean) * grey_scale;
             // Gradient orientations: channel k holds |g|·max(0, cos 2(θ − kπ/K)), from cos 2θ and
-            // sin 2θ without an angle (unsigned orientation: a rim looks the same whichever side is brighter).
-            if (magnitude_[i] > 0.0f) {
-                const float cos2 = (gx_[i] * gx_[i] - gy_[i] * gy_[i]) / magnitude_[i], sin2 = 2.0f * gx_[i] * gy_[i] / magnitude_[i];
-                for (int k = 0; k < kOrientations; ++k)
-                    f[1 + k] = std::max(0.0f, cos2 * cos2_[k] + sin2 * sin2_[k]) * magnitude_scale;
+            // sin 2θ without an angle (unsigned orientation: a rim looks the same whichever side is
+            // brighter); nothing where there is no gradient.
+            const Lanes gx = load_lanes(&gx_[i]), gy = load_lanes(&gy_[i]), magnitude = load_lanes(&magnitude_[i]);
+            const LaneIndex edge = magnitude > 0.0f;
+            const Lanes cos2 = (gx * gx - gy * gy) / magnitude, sin2 = 2.0f * gx * gy / magnitude;
+            for (int k = 0; k < kOrientations; ++k) {
+                const Lanes along = cos2 * cos2_[k] + sin2 * sin2_[k];
+                f[1 + k] = edge ? (along > 0.0f ? along : 0.0f) * magnitude_scale : Lanes{};
             }
             if (colour) {
-                f[1 + kOrientations] = (cb_[i] - u_mean) * chroma_scale;
-                f[2 + kOrientations] = (cr_[i] - v_mean) * chroma_scale;
+                f[1 + kOrientations] = (load_lanes(&cb_[i]) - u_mean) * chroma_scale;
+                f[2 + kOrientations] = (load_lanes(&cr_[i]) - v_mean) * chroma_scale;
             }
-            for (int p = 0; p < pairs; ++p) pairs_[p][i] = {w * f[2 * p], w * f[2 * p + 1]};
+            // Each pair as complex numbers, (real, imaginary) side by side.
+            for (int p = 0; p < pairs; ++p) {
+                const Lanes re = w * f[2 * p], im = w * f[2 * p + 1];
+                float* out = reinterpret_cast<float*>(&pairs_[p][i]);
+                store_lanes(out, __builtin_shufflevector(re, im, 0, 4, 1, 5));
+                store_lanes(out + kLanes, __builtin_shufflevector(re, im, 2, 6, 3, 7));
+            }
         }
     }
 }

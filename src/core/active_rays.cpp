@@ -58,8 +58,8 @@ bool ActiveRays::configure(const RaysTunables& tunables) {
 
 int ActiveRays::previous_active(int ray) const {
     const int n = table_.count();
-    for (int k = 1; k < n; ++k) {
-        const int r = (ray - k + n) % n;
+    for (int k = 1, r = ray; k < n; ++k) {
+        r = r > 0 ? r - 1 : n - 1;  // round the ring without a division
         if (active_[r]) return r;
     }
     return ray;
@@ -67,8 +67,8 @@ int ActiveRays::previous_active(int ray) const {
 
 int ActiveRays::next_active(int ray) const {
     const int n = table_.count();
-    for (int k = 1; k < n; ++k) {
-        const int r = (ray + k) % n;
+    for (int k = 1, r = ray; k < n; ++k) {
+        r = r + 1 < n ? r + 1 : 0;
         if (active_[r]) return r;
     }
     return ray;

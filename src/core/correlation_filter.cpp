@@ -195,6 +195,7 @@ void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma
 
     // The channels, four samples of a row at a time in vector lanes (lanes.hpp), each lane doing
     // the scalar arithmetic.
+    static_assert(kN % kLanes == 0, "a window row is whole groups of lanes");
     for (int v = 0; v < kN; ++v) {
         for (int u = 0; u < kN; u += kLanes) {
             const int i = v * kN + u;

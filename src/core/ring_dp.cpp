@@ -115,7 +115,7 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
             prev_lam_[p] = lam(prev, p) + Lanes{};
             prev_cap_[p] = cap(prev, p) + Lanes{};
         }
-        for (int k = 0; k < chunks; ++k) next_cap_[k] = k * kLanes + kLaneOffsets < capped_[next] ? caps_[1] : caps_[0];
+        for (int k = 0; k < chunks; ++k) next_cap_[k] = cap_lanes(next, k);
         for (int q = 0; q < states_[cur]; ++q) {
             const float lq = lam(cur, q);
             const float cq = cap(cur, q);
@@ -192,7 +192,7 @@ void RingDp::open_first_order(double alpha, int* states) {
         // what they carry: never read): the best previous state p for each, the first p on a tie.
         for (int k = 0; k * kLanes < nq; ++k) {
             const Lanes lq = load_lanes(&lam_[static_cast<std::size_t>(t) * stride + k * kLanes]);
-            const Lanes cq = k * kLanes + kLaneOffsets < capped_[t] ? caps_[1] : caps_[0];
+            const Lanes cq = cap_lanes(t, k);
             Lanes best = kInf + Lanes{};
             LaneIndex arg = LaneIndex{};
             for (int p = 0; p < states_[t - 1]; ++p) {

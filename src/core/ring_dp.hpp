@@ -60,6 +60,10 @@ private:
     // The most a smoothness term may charge as far as state s of `node` is concerned.
     // A table, not a branch: which states are edges is as good as random to a branch predictor.
     float cap(int node, int s) const { return caps_[s < capped_[node]]; }
+    // The same for the states of lane group `group` (states kLanes·group … kLanes·group + kLanes − 1).
+    Lanes cap_lanes(int node, int group) const {
+        return group * kLanes + kLaneOffsets < capped_[node] ? caps_[1] : caps_[0];
+    }
 
     int max_nodes_;
     int stride_;  // room for a node's states: the most it may have, in whole groups of vector lanes

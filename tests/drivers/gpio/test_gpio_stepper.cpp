@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstring>
 
@@ -193,21 +194,54 @@ TEST_CASE("gpio-stepper: E-stop stops every edge and faults until released", "[g
                           [&] { return rig.lines.edge_count() > edges; }));
 }
 
-TEST_CASE("gpio-stepper: a stale command stream ramps the axes to a stop", "[gpio]") {
-    StepperRig rig;
-    REQUIRE(rig.drive(command(CommandMode::Velocity, deg(90.0), deg(90.0)), 0.3));
-    const TimePoint last_write = MonoClock::now();
-    // Stopped: no edge for 0.5 s (timeout 0.3 s + ramp 0.125 s on an idle machine).
-    std::size_t edges = rig.lines.edge_count();
-    TimePoint changed = MonoClock::now();
-    REQUIRE(eventually([&] {
-        if (rig.lines.edge_count() != edges) edges = rig.lines.edge_count(), changed = MonoClock::now();
-        return seconds_between(changed, MonoClock::now()) > 0.5;
-    }));
-    const std::vector<TimePoint> steps = rising(rig.lines.edges_of(kPanStep));
-    REQUIRE_FALSE(steps.empty());
-    CHECK(seconds_between(last_write, steps.back()) > 0.29);  // it kept going until the command was stale
-    CHECK(rig.driver->report().at_rest);
+// The driver's clock, moved by the test while the pulse thread reads it.
+class HandClock final : public Clock {
+public:
+    TimePoint now() const override { return TimePoint{TimePoint::duration{ticks_.load()}}; }
+    void set_seconds(double seconds) {
+        ticks_.store(std::chrono::duration_cast<TimePoint::duration>(std::chrono::duration<double>(seconds)).count());
+    }
+
+private:
+    std::atomic<TimePoint::duration::rep> ticks_{0};
+};
+
+// Staleness is judged on the driver's clock, here moved by hand, so what is asserted does not hang on
+// when the pulse thread happens to wake.
+TEST_CASE("gpio-stepper: a stale command stream ramps the axes to rest, and the next write moves them", "[gpio]") {
+    HandClock clock;
+    clock.set_seconds(10.0);
+    gpio::FakeGpioLines lines;
+    lines.add_motor(kPanStep, kPanDir);
+    lines.add_motor(kTiltStep, kTiltDir);
+    std::string error;
+    const std::unique_ptr<gpio::GpioStepper> driver = gpio::make_gpio_stepper_driver(rig_settings(), clock, lines, error);
+    REQUIRE(driver != nullptr);
+    REQUIRE(driver->configure().ok);
+    REQUIRE(driver->activate().ok);
+    REQUIRE(driver->write(command(CommandMode::Velocity, deg(90.0), deg(90.0)), clock.now()).ok);
+    // 0.29 s after the write on the driver's clock (timeout 0.3 s): still fresh, the axes keep stepping.
+    clock.set_seconds(10.29);
+    REQUIRE(eventually([&] { return lines.steps(kPanStep) > 200 && lines.steps(kTiltStep) > 200; }));
+    CHECK_FALSE(driver->report().at_rest);
+    // 0.31 s: stale. They come to rest and stay there with no further write, after no more steps than
+    // the ramp down from 90 deg/s allows (v^2 / 2a; lateness only drops steps) and the one a wake-up
+    // that read the clock just before it moved may still make.
+    clock.set_seconds(10.31);
+    const TimePoint stale = MonoClock::now();
+    REQUIRE(eventually([&] { return driver->report().at_rest; }));
+    const std::size_t edges = lines.edge_count();
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    CHECK(lines.edge_count() == edges);
+    const double speed = 90.0 * kStepsPerDeg, accel = 720.0 * kStepsPerDeg;
+    for (int line : {kPanStep, kTiltStep}) {
+        const std::vector<TimePoint> steps = rising(lines.edges_of(line));
+        const auto after = std::count_if(steps.begin(), steps.end(), [&](TimePoint t) { return t > stale; });
+        CHECK(after <= std::lround(speed * speed / (2.0 * accel)) + 1);
+    }
+    CHECK(driver->report().status.ok);  // a stale stream is no fault: the next write moves them again
+    REQUIRE(driver->write(command(CommandMode::Velocity, deg(30.0), 0.0), clock.now()).ok);
+    CHECK(eventually([&] { return lines.edge_count() > edges; }));
 }
 
 TEST_CASE("gpio-stepper: an I/O error stops, faults, reopens with backoff and recovers", "[gpio]") {

@@ -27,6 +27,16 @@ double reach_in(const Box& box, Point m, double c, double s) {
     return std::max(reach, 0.0);
 }
 
+// A stand-in for the direction's angle from 0 to 2π, rising with it from 0 to 4 (the "diamond
+// angle"): orders directions as atan2 does, for a division instead of atan2's hundred cycles.
+double pseudo_angle(double dx, double dy) {
+    if (dy >= 0.0) {
+        if (dx >= 0.0) return dx + dy > 0.0 ? dy / (dx + dy) : 0.0;
+        return 1.0 - dx / (dy - dx);
+    }
+    return dx < 0.0 ? 2.0 - dy / (-dx - dy) : 3.0 + dx / (dx - dy);
+}
+
 }  // namespace
 
 void PolarPrior::set_polygon(const Point* pts, int n, const unsigned char* open) {
@@ -83,12 +93,11 @@ void PolarPrior::resample_lambda(const RayTable& table, Point m, double lo, doub
         mean_radius_ = r;
         return;
     }
-    constexpr double two_pi = 2.0 * std::numbers::pi;
+    constexpr double turn = 4.0;  // a whole turn in pseudo_angle()
     // Vertex angles round m, unwrapped from the vertex with the smallest angle so that they rise.
     int first = 0;
     for (int k = 0; k < n_; ++k) {
-        double a = std::atan2(points_[k].y - m.y, points_[k].x - m.x);
-        angle_[k] = a < 0 ? a + two_pi : a;
+        angle_[k] = pseudo_angle(points_[k].x - m.x, points_[k].y - m.y);
         if (angle_[k] < angle_[first]) first = k;
     }
     int k = 0;  // current edge: vertex (first + k) to (first + k + 1)
@@ -96,16 +105,16 @@ void PolarPrior::resample_lambda(const RayTable& table, Point m, double lo, doub
         const int v = first + j;
         return v < n_ ? v : v - n_ < n_ ? v - n_ : v - 2 * n_;
     };
-    auto unwrapped = [&](int j) { return angle_[vertex(j)] + (j >= n_ ? two_pi : 0.0); };
+    auto unwrapped = [&](int j) { return angle_[vertex(j)] + (j >= n_ ? turn : 0.0); };
     for (int i = 0; i < rays; ++i) {
-        const double phi = table.angle(i);
+        const double ux = table.cos_at(i), uy = table.sin_at(i);
+        const double phi = pseudo_angle(ux, uy);
         while (k < n_ && unwrapped(k + 1) <= phi) ++k;
         // Edge from vertex k to k+1 (wrapping: before the first vertex the edge ends at it).
         const int va = vertex(k == 0 && phi < angle_[first] ? n_ - 1 : k);
         const int vb = vertex(k == 0 && phi < angle_[first] ? 0 : k + 1);
         const Point a = points_[va], b = points_[vb];
         open_[i] = point_open_[va] | point_open_[vb];
-        const double ux = table.cos_at(i), uy = table.sin_at(i);
         const double ex = b.x - a.x, ey = b.y - a.y;
         const double denom = ux * ey - uy * ex;
         double lam;

@@ -21,6 +21,17 @@ void butterfly(float* __restrict ar, float* __restrict ai, float* __restrict br,
     }
 }
 
+// The same with w = 1 (the first butterfly of every group): no products.
+void butterfly_unit(float* __restrict ar, float* __restrict ai, float* __restrict br, float* __restrict bi, int columns) {
+    for (int c = 0; c < columns; ++c) {
+        const float tr = br[c], ti = bi[c];
+        br[c] = ar[c] - tr;
+        bi[c] = ai[c] - ti;
+        ar[c] += tr;
+        ai[c] += ti;
+    }
+}
+
 }  // namespace
 
 FftColumns::FftColumns() {
@@ -49,11 +60,14 @@ void FftColumns::run(float* re, float* im, int columns, int stride, Direction di
     const float sign = direction == Direction::Forward ? -1.0f : 1.0f;
     for (int half = 1; half < kPoints; half <<= 1) {
         const int twiddle_step = kPoints / (2 * half);
-        for (int start = 0; start < kPoints; start += 2 * half)
-            for (int k = 0; k < half; ++k) {
+        for (int start = 0; start < kPoints; start += 2 * half) {
+            const int a0 = start * stride, b0 = a0 + half * stride;
+            butterfly_unit(re + a0, im + a0, re + b0, im + b0, columns);
+            for (int k = 1; k < half; ++k) {
                 const int a = (start + k) * stride, b = a + half * stride;
                 butterfly(re + a, im + a, re + b, im + b, cos_[k * twiddle_step], sign * sin_[k * twiddle_step], columns);
             }
+        }
     }
 }
 

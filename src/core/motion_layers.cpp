@@ -29,8 +29,6 @@ float blend4(const float* r0, int stride, float fx, float fy) {
 
 int floor_half(int n) { return n >= 0 ? n / 2 : -((1 - n) / 2); }  // ⌊n / 2⌋ for any sign
 
-bool on_image(double x, double y) { return x >= 0.0 && y >= 0.0 && x <= kFrameSize - 1 && y <= kFrameSize - 1; }
-
 }  // namespace
 
 bool MotionLayers::valid() const { return frames_ >= kLeastFrames; }
@@ -49,12 +47,20 @@ float MotionLayers::inside_residual(const FloatImage& before, int dx, int dy) co
 }
 
 float MotionLayers::inside_residual(const FloatImage& before, Point shift) const {
+    // A tap at x0 + fx moved back by the shift's whole part w and fraction f (0 ≤ f < 1) lies at
+    // x0 − w + (fx − f), one pixel further left where fx < f.
+    const double wx = std::floor(shift.x), wy = std::floor(shift.y);
+    const auto fx_shift = static_cast<float>(shift.x - wx), fy_shift = static_cast<float>(shift.y - wy);
+    const int dx = static_cast<int>(wx), dy = static_cast<int>(wy);
     float sum = 0.0f;
     int count = 0;
     for (int k = 0; k < inside_count_; ++k) {
-        const double x = inside_[k].x - shift.x, y = inside_[k].y - shift.y;
-        if (!on_image(x, y)) continue;
-        sum += std::abs(inside_now_[k] - sample_bilinear(before, x, y));
+        const Tap& t = taps_[k];
+        const bool left = t.fx < fx_shift, up = t.fy < fy_shift;
+        const int x = t.x0 - dx - (left ? 1 : 0), y = t.y0 - dy - (up ? 1 : 0);
+        const float fx = t.fx - fx_shift + (left ? 1.0f : 0.0f), fy = t.fy - fy_shift + (up ? 1.0f : 0.0f);
+        if (x < 0 || y < 0 || x > kFrameSize - 2 || y > kFrameSize - 2) continue;
+        sum += std::abs(inside_now_[k] - blend4(before.row(y) + x, kFrameSize, fx, fy));
         ++count;
     }
     return count > 0 ? sum / static_cast<float>(count) : std::numeric_limits<float>::max();
@@ -73,7 +79,6 @@ Point MotionLayers::match_shift(const FloatImage& now, const FloatImage& before,
             t.y0 = static_cast<int>(q.y);
             t.fx = static_cast<float>(q.x - t.x0);
             t.fy = static_cast<float>(q.y - t.y0);
-            inside_[inside_count_] = q;
             inside_now_[inside_count_++] = sample_bilinear(now, q.x, q.y);
         }
     }

@@ -51,8 +51,9 @@ private:
 
     // The target's shift between the frames, searched round `moved_by` and round the last shift.
     Point match_shift(const FloatImage& now, const FloatImage& before, const Contour& contour, Point moved_by);
-    // Mean |now(x) − before(x − shift)| over the samples inside the contour: for a whole-pixel shift
-    // from the taps, for any other by bilinear sampling. Samples moved off the image do not count.
+    // Mean |now(x) − before(x − shift)| over the samples inside the contour, each from its tap: a
+    // whole-pixel shift moves only the cell, any other the fractions too. Samples moved off the
+    // image do not count.
     float inside_residual(const FloatImage& before, int dx, int dy) const;
     float inside_residual(const FloatImage& before, Point shift) const;
     // `image` at each cell's centre moved back by `shift` (this(x) = image(x − shift)); cells whose
@@ -61,7 +62,6 @@ private:
     // The map moved on by `shift` px, each cell scaled by `keep` and added to `out` (0 off the map).
     void add_moved(Point shift, float keep, CellPlane& out) const;
 
-    std::array<Point, kInsideSamples> inside_{};
     std::array<Tap, kInsideSamples> taps_{};
     std::array<float, kInsideSamples> inside_now_{};
     int inside_count_ = 0;

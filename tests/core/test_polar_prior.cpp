@@ -79,7 +79,7 @@ TEST_CASE("PolarPrior: each ray meets the previous contour where some edge of it
     }
 }
 
-TEST_CASE("PolarPrior: λ_prior is clamped to the search span; a circle prior is its radius", "[polar_prior]") {
+TEST_CASE("PolarPrior: λ_prior is clamped to the search span, and a circle prior is its radius", "[polar_prior]") {
     rays::RayTable table(72);
     rays::PolarPrior prior(72);
     const std::vector<Point> square = {{94, 94}, {34, 94}, {34, 34}, {94, 34}};

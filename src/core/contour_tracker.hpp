@@ -25,6 +25,10 @@ struct FrameResult {
     Point predicted;               // where m was expected this frame
     Detection detection;           // the motion detector's output, on frames it ran
     const char* lost_reason = nullptr;
+    // How surely the target's looks were found this frame: the correlation filter's peak-to-sidelobe
+    // ratio where it found the target (about 5 and up: sure; 0 where it did not look, as for a new
+    // target's first frame and for a tracker without a filter).
+    double match_psr = 0.0;
     // The track just dropped was not on the target (it stood on background while the target moved
     // on): where it was is no place to look for the target again.
     bool off_target = false;

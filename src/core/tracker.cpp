@@ -318,6 +318,7 @@ void Tracker::track(TimePoint deadline) {
     match_ = filter_.locate(smoothed_, *chroma_, expected);
     if (match_.at.x < 0.0 || match_.at.y < 0.0 || match_.at.x > kFrameSize - 1 || match_.at.y > kFrameSize - 1)
         match_.psr = 0.0;  // a target found off the frame is not found
+    result_.match_psr = match_.psr;
     const bool confident = match_.psr >= kConfidentPsr;
     if (confident) v = {match_.at.x - last.x, match_.at.y - last.y};
     // Where a confident filter match says the target is, once: a measurement, not a guess. Without
@@ -421,11 +422,13 @@ bool Tracker::look_again(TimePoint deadline) {
     const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
     // First where it was last seen ...
     const FilterMatch near = filter_.locate(smoothed_, *chroma_, last_seen_);
+    result_.match_psr = near.psr;
     if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline)) return true;
     // ... then anywhere in the frame, where a match must be about as clear as the target's were.
     const FilterMatch found = search_frame();
     if (found.psr < std::max(kConfidentPsr, kRedetectShare * psr_tracked_)) return false;
     const FilterMatch match = filter_.locate(smoothed_, *chroma_, found.at);  // centred on it: learned from there
+    result_.match_psr = match.psr;
     return match.psr >= kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
 }
 
@@ -520,6 +523,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     ++result_.frame;
     result_.lost_reason = nullptr;
     result_.off_target = false;
+    result_.match_psr = 0.0;
     result_.detection = {};
     frame_ = &frame;
     chroma_ = &chroma;
@@ -596,6 +600,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
         result_.has_contour = found;
         result_.predicted = contour_.centroid;
     }
+    if (!result_.has_contour) result_.match_psr = 0.0;
     untracked_frames_ = result_.has_contour ? 0 : untracked_frames_ + 1;
     if (keep_background) background_.learn(smoothed_, result_.has_contour ? &contour_ : nullptr);
     external_prediction_.reset();

@@ -235,6 +235,7 @@ void FrameLoop::track_frame(TimePoint now) {
     telemetry_.rays = result.has_contour ? contour.size : 0;
     telemetry_.levels = result.has_contour ? contour.levels : 0;
     telemetry_.deadline_hit = result.has_contour && contour.deadline_hit;
+    telemetry_.psr = result.has_contour ? static_cast<float>(result.match_psr) : 0.0f;
     telemetry_.track_us = Micros(clock_.now() - begin).count();
     ++stats_.frames;
     if (telemetry_.deadline_hit) ++stats_.deadline_hits;

@@ -63,6 +63,7 @@ struct FrameTelemetry {
     float area_px = 0;
     int rays = 0, levels = 0;
     bool deadline_hit = false;
+    float psr = 0;              // how surely the target's looks were found (FrameResult::match_psr)
     float track_us = 0;         // tracking (smoothing, detection, extraction)
     float loop_us = 0;          // the whole frame loop step, capture hand-over to driver write
     float latency_us = 0;       // capture time to driver write

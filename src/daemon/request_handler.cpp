@@ -308,6 +308,7 @@ json frame_record(const FrameTelemetry& f) {
             {"rays", f.rays},
             {"levels", f.levels},
             {"deadline_hit", f.deadline_hit},
+            {"psr", f.psr},
             {"track_us", f.track_us},
             {"loop_us", f.loop_us},
             {"latency_us", f.latency_us},

@@ -110,3 +110,28 @@ TEST_CASE("Tracker finds a target lost while the camera turned by its looks, any
         CHECK(run.on_target());
     }
 }
+
+TEST_CASE("Tracker says how surely it finds the target's looks: sure while seen, not once hidden", "[tracker][view]") {
+    // FrameResult::match_psr, the correlation filter's peak-to-sidelobe ratio where it found the
+    // target: 0 on a new target's first frame (nothing learned to look for), at least 5 (the
+    // filter's own "sure") while the textured target crosses the panning world, and below that, or
+    // 0 with the track lost, once something hides it.
+    PanningScene run;
+    const Point start{40.0, 64.0};
+    REQUIRE(run.tracker.start_in({start.x - PanningScene::kA, start.y - PanningScene::kB, 2 * PanningScene::kA + 1,
+                                  2 * PanningScene::kB + 1}));
+    REQUIRE(run.step({0.0, 0.0}, start) == TrackState::Tracking);
+    CHECK(run.tracker.result().match_psr == 0.0);
+    Point target = start;
+    for (int i = 1; i < 12; ++i) {
+        target = {start.x + 0.5 * i, start.y};
+        INFO("frame " << i);
+        REQUIRE(run.step({1.0 * i, 0.0}, target) == TrackState::Tracking);
+        CHECK(run.on_target());
+        CHECK(run.tracker.result().match_psr >= 5.0);
+    }
+    const TrackState hidden = run.step({12.0, 0.0}, target, true);
+    INFO("hidden: " << rays::to_string(hidden) << ", psr " << run.tracker.result().match_psr);
+    CHECK(run.tracker.result().match_psr < 5.0);
+    if (hidden != TrackState::Tracking) CHECK(run.tracker.result().match_psr == 0.0);
+}

@@ -220,6 +220,7 @@ TEST_CASE("every command works over the socket, and raysctl's exit codes tell th
         REQUIRE(record);
         if ((*record)["class"] != "frame") continue;
         CHECK((*record)["frame"].get<long>() > last);
+        CHECK((*record)["psr"].get<double>() >= 0.0);  // how surely the target's looks were found (0: not tracking)
         last = (*record)["frame"].get<long>();
         ++frames;
     }
@@ -245,6 +246,7 @@ TEST_CASE("every command works over the socket, and raysctl's exit codes tell th
     CHECK(read_file(s.dir / "snap.png").substr(1, 3) == "PNG");
     CHECK(raysctl(s, "watch 3", &out) == 0);
     CHECK(std::count(out.begin(), out.end(), '\n') == 3);
+    CHECK(out.find(" psr ") != std::string::npos);
     CHECK(std::system((emulated(raysctl_binary().string()) + " --socket " + (s.dir / "none.sock").string() +
                        " status 2>/dev/null").c_str()) >> 8 == 3);
     daemon.signal(SIGTERM);

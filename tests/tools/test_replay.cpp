@@ -152,19 +152,23 @@ TEST_CASE("rays-replay says why a track was lost on the frame it was lost", "[to
     std::ifstream in(dir / "run.jsonl");
     std::string line;
     REQUIRE(std::getline(in, line));  // the header
-    int lost = 0, tracking = 0;
+    int lost = 0, tracking = 0, sure = 0;
     while (std::getline(in, line)) {
         const auto o = nlohmann::json::parse(line);
+        REQUIRE(o.contains("psr"));  // how surely the target's looks were found: 0 where not tracking
         if (o["state"] == "lost") {
             ++lost;
             REQUIRE(o.contains("lost_reason"));
             CHECK(!o["lost_reason"].get<std::string>().empty());
+            CHECK(o["psr"] == 0);
         } else {
             CHECK(!o.contains("lost_reason"));
             if (o["state"] == "tracking") ++tracking;
+            if (o["state"] == "tracking" && o["psr"].get<double>() >= 5.0) ++sure;
         }
     }
     CHECK(tracking >= 5);
+    CHECK(sure >= 3);  // the disc's frames after its first (nothing learned to look for yet)
     CHECK(lost >= 1);
     fs::remove_all(dir);
 }

@@ -31,8 +31,8 @@ void write_frame(std::FILE* out, const Tracker& tracker, double time_us, bool cr
         std::fprintf(out, "\"ref\":[%.2f,%.2f],\"contour\":[", c.ref.x, c.ref.y);
         for (int i = 0; i < c.size; ++i)
             std::fprintf(out, "%s[%.2f,%.2f]", i ? "," : "", c.points[i].p.x, c.points[i].p.y);
-        std::fprintf(out, "],\"rays\":%d,\"levels\":%d,\"deadline_hit\":%s", c.size, c.levels,
-                     c.deadline_hit ? "true" : "false");
+        std::fprintf(out, "],\"rays\":%d,\"levels\":%d,\"deadline_hit\":%s,\"psr\":%.1f", c.size, c.levels,
+                     c.deadline_hit ? "true" : "false", r.match_psr);
         if (crossings) {
             // Further accepted crossings per ray (concave parts), as image points.
             std::fprintf(out, ",\"crossings\":[");
@@ -49,7 +49,7 @@ void write_frame(std::FILE* out, const Tracker& tracker, double time_us, bool cr
             std::fprintf(out, "]");
         }
     } else {
-        std::fprintf(out, "\"ref\":null,\"contour\":[],\"rays\":0,\"levels\":0,\"deadline_hit\":false");
+        std::fprintf(out, "\"ref\":null,\"contour\":[],\"rays\":0,\"levels\":0,\"deadline_hit\":false,\"psr\":0");
     }
     if (r.lost_reason != nullptr)
         std::fprintf(out, ",\"lost_reason\":%s", nlohmann::json(r.lost_reason).dump().c_str());

@@ -60,8 +60,8 @@ void print_stats(const json& s) {
 }
 
 void print_frame(const json& f) {
-    std::printf("frame %s %s ref %s rays %s track %s us pan %s tilt %s\n", field(f, "frame").c_str(),
-                field(f, "state").c_str(), field(f, "ref").c_str(), field(f, "rays").c_str(),
+    std::printf("frame %s %s ref %s rays %s psr %s track %s us pan %s tilt %s\n", field(f, "frame").c_str(),
+                field(f, "state").c_str(), field(f, "ref").c_str(), field(f, "rays").c_str(), field(f, "psr").c_str(),
                 field(f, "track_us").c_str(), field(f, "pan_deg").c_str(), field(f, "tilt_deg").c_str());
 }
 

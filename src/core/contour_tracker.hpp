@@ -27,7 +27,8 @@ struct FrameResult {
     const char* lost_reason = nullptr;
     // How surely the target's looks were found this frame: the correlation filter's peak-to-sidelobe
     // ratio where it found the target (about 5 and up: sure; 0 where it did not look, as for a new
-    // target's first frame and for a tracker without a filter).
+    // target's first frame and for a tracker without a filter). The filter learns what the track
+    // holds: a track on background can be sure of it too.
     double match_psr = 0.0;
     // The track just dropped was not on the target (it stood on background while the target moved
     // on): where it was is no place to look for the target again.

@@ -230,6 +230,29 @@ TEST_CASE("rays-soak --overlay makes its folder or fails once before the run", "
     CHECK(lines == 1);
 }
 
+TEST_CASE("rays-soak --seeds runs each seed as --seed does and adds them up", "[tools]") {
+    // Two seeds of a short lockstep run: each seed's row is that seed's own run, the totals their sum
+    // and means.
+    const std::string soak = std::string(RAYS_SOAK) + " --scenario soak-clutter --frames 120 --lockstep --json ";
+    const fs::path dir = temp_dir("seeds");
+    REQUIRE(run(soak + "--seeds 2-3 > " + (dir / "both.json").string()) == 0);
+    REQUIRE(run(soak + "--seed 2 > " + (dir / "2.json").string()) == 0);
+    REQUIRE(run(soak + "--seed 3 > " + (dir / "3.json").string()) == 0);
+    auto read = [](const fs::path& path) {
+        std::ifstream in(path);
+        return nlohmann::json::parse(in);
+    };
+    const auto both = read(dir / "both.json"), two = read(dir / "2.json"), three = read(dir / "3.json");
+    REQUIRE(both["seeds"].size() == 2);
+    CHECK(both["seeds"][0] == two);
+    CHECK(both["seeds"][1] == three);
+    CHECK(both["seeds"][1]["config"]["seed"] == 3);
+    CHECK(both["losses"] == two["losses"].get<long>() + three["losses"].get<long>());
+    CHECK(both["on_target_fraction"].get<double>() ==
+          Approx((two["on_target_fraction"].get<double>() + three["on_target_fraction"].get<double>()) / 2));
+    fs::remove_all(dir);
+}
+
 TEST_CASE("rays-soak --lockstep runs the same closed loop every time", "[tools]") {
     // Real time within a frame (the default) reaches the controller and the measured latency, so two
     // runs differ; in lockstep a run depends on its settings alone, frame by frame.

@@ -51,3 +51,21 @@ TEST_CASE("rays-soak --lockstep is a run without a budget") {
     CHECK_FALSE(o.budget_ms);
     CHECK(parse({"--lockstep", "--budget-ms", "5"}, p));  // a budget needs real time within the frame
 }
+
+TEST_CASE("rays-soak --seeds takes a range of seeds, for one run each, and nothing that is for one run") {
+    SoakOptions o;
+    REQUIRE_FALSE(parse({"--seeds", "1-6", "--scenario", "patrol", "--lockstep"}, o));
+    REQUIRE(o.first_seed);
+    CHECK(*o.first_seed == 1);
+    CHECK(*o.last_seed == 6);
+    CHECK_FALSE(o.seed);
+    SoakOptions bad[8];
+    CHECK(parse({"--seeds", "6-1"}, bad[0]));
+    CHECK(parse({"--seeds", "3"}, bad[1]));
+    CHECK(parse({"--seeds", "1-x"}, bad[2]));
+    CHECK(parse({"--seeds", "1-2", "--seed", "4"}, bad[3]));
+    CHECK(parse({"--seeds", "1-2", "--sweep-gain", "2,4"}, bad[4]));
+    CHECK(parse({"--seeds", "1-2", "--trace", "t.csv"}, bad[5]));
+    CHECK(parse({"--seeds", "1-2", "--plot", "p.png"}, bad[6]));
+    CHECK(parse({"--seeds", "1-2", "--overlay", "ov"}, bad[7]));
+}

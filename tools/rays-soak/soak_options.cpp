@@ -40,7 +40,7 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             out.help = true;
             continue;
         }
-        static constexpr std::string_view kValued[] = {"--frames", "--scenario", "--seed", "--config", "--law",
+        static constexpr std::string_view kValued[] = {"--frames", "--scenario", "--seed", "--seeds", "--config", "--law",
                                                        "--method", "--gain", "--sweep-gain", "--compare", "--budget-ms", "--plot", "--trace", "--overlay", "--overlay-window"};
         if (std::find(std::begin(kValued), std::end(kValued), arg) == std::end(kValued))
             return "unknown argument '" + std::string(arg) + "'";
@@ -55,6 +55,13 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             std::optional<int> n = number<int>(value);
             if (!n || *n < 0) return bad + " (an integer ≥ 0)";
             out.seed = *n;
+        } else if (arg == "--seeds") {
+            const std::size_t dash = value.find('-');
+            std::optional<int> first = number<int>(value.substr(0, dash));
+            std::optional<int> last = dash == std::string_view::npos ? std::nullopt : number<int>(value.substr(dash + 1));
+            if (!first || !last || *first < 0 || *last < *first) return bad + " (A-B with 0 <= A <= B)";
+            out.first_seed = *first;
+            out.last_seed = *last;
         } else if (arg == "--scenario") {
             out.scenario = std::string(value);
         } else if (arg == "--config") {
@@ -97,6 +104,11 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
     const int modes = (out.gain ? 1 : 0) + (out.sweep_gains.empty() ? 0 : 1) + (out.compare_gains.empty() ? 0 : 1);
     if (modes > 1) return "--gain, --sweep-gain and --compare exclude each other";
     if (out.lockstep && out.budget_ms) return "--lockstep has no budget: no --budget-ms";
+    if (out.first_seed && out.seed) return "--seed and --seeds exclude each other";
+    if (out.first_seed && (!out.sweep_gains.empty() || !out.compare_gains.empty()))
+        return "--seeds runs one gain: no --sweep-gain or --compare";
+    if (out.first_seed && (!out.plot_path.empty() || !out.trace_path.empty() || !out.overlay_dir.empty()))
+        return "--plot, --trace and --overlay are for one run: not with --seeds";
     if (!out.compare_gains.empty() && (out.law || out.method))
         return "--compare runs both laws and both methods itself: no --law or --method";
     return std::nullopt;

@@ -8,8 +8,8 @@
 namespace rays::soak {
 
 inline constexpr const char* kUsage =
-    "usage: rays-soak [--frames N] [--scenario soak|soak-clutter|ramp|patrol|crowd|horizon] [--seed N] [--config FILE.ini]\n"
-    "                 [--law predictive|proportional] [--method rays|snake]\n"
+    "usage: rays-soak [--frames N] [--scenario soak|soak-clutter|ramp|patrol|crowd|horizon] [--seed N | --seeds A-B]\n"
+    "                 [--config FILE.ini] [--law predictive|proportional] [--method rays|snake]\n"
     "                 [--gain G | --sweep-gain G1,G2,... | --compare G1,G2,...]\n"
     "                 [--budget-ms B | --lockstep] [--json] [--plot FILE.png] [--trace FILE.csv]\n"
     "                 [--overlay DIR [--overlay-window FROM_S,TO_S]]";
@@ -18,6 +18,9 @@ struct SoakOptions {
     long frames = 45000;
     std::optional<std::string> scenario;  // overrides sim.scenario (raysd's default: soak)
     std::optional<int> seed;
+    // --seeds A-B: one run per seed from A to B, each summarised, then their totals: a change to the
+    // tracker moves single runs by more than it moves the scenario.
+    std::optional<int> first_seed, last_seed;
     std::string config_path;          // empty: raysd's built-in defaults
     std::optional<std::string> law;   // overrides control.law
     std::optional<std::string> method;  // overrides track.method

@@ -69,3 +69,13 @@ TEST_CASE("rays-soak --seeds takes a range of seeds, for one run each, and nothi
     CHECK(parse({"--seeds", "1-2", "--plot", "p.png"}, bad[6]));
     CHECK(parse({"--seeds", "1-2", "--overlay", "ov"}, bad[7]));
 }
+
+TEST_CASE("rays-soak --overlay-window takes FROM_S,TO_S in order") {
+    SoakOptions o, bad[3];
+    REQUIRE_FALSE(parse({"--overlay", "ov", "--overlay-window", "1.5,4"}, o));
+    CHECK(o.overlay_from_s == 1.5);
+    CHECK(o.overlay_to_s == 4.0);
+    CHECK(parse({"--overlay-window", "4,1.5"}, bad[0]));
+    CHECK(parse({"--overlay-window", "1.5"}, bad[1]));
+    CHECK(parse({"--overlay-window", "-1,2"}, bad[2]));
+}

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <string_view>
+#include <utility>
 
 namespace rays::soak {
 namespace {
@@ -21,6 +22,16 @@ std::optional<double> positive(std::string_view text) {
     std::optional<double> v = number<double>(text);
     if (!v || !std::isfinite(*v) || *v <= 0) return std::nullopt;
     return v;
+}
+
+// "A<separator>B" with 0 <= A <= B (a range of seeds, a window of seconds).
+template <class T>
+std::optional<std::pair<T, T>> ordered_pair(std::string_view text, char separator) {
+    const std::size_t at = text.find(separator);
+    if (at == std::string_view::npos) return std::nullopt;
+    std::optional<T> first = number<T>(text.substr(0, at)), last = number<T>(text.substr(at + 1));
+    if (!first || !last || *first < 0 || *last < *first) return std::nullopt;
+    return std::pair{*first, *last};
 }
 
 }  // namespace
@@ -56,12 +67,10 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             if (!n || *n < 0) return bad + " (an integer ≥ 0)";
             out.seed = *n;
         } else if (arg == "--seeds") {
-            const std::size_t dash = value.find('-');
-            std::optional<int> first = number<int>(value.substr(0, dash));
-            std::optional<int> last = dash == std::string_view::npos ? std::nullopt : number<int>(value.substr(dash + 1));
-            if (!first || !last || *first < 0 || *last < *first) return bad + " (A-B with 0 <= A <= B)";
-            out.first_seed = *first;
-            out.last_seed = *last;
+            const std::optional<std::pair<int, int>> seeds = ordered_pair<int>(value, '-');
+            if (!seeds) return bad + " (A-B with 0 <= A <= B)";
+            out.first_seed = seeds->first;
+            out.last_seed = seeds->second;
         } else if (arg == "--scenario") {
             out.scenario = std::string(value);
         } else if (arg == "--config") {
@@ -73,12 +82,10 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
         } else if (arg == "--overlay") {
             out.overlay_dir = value;
         } else if (arg == "--overlay-window") {
-            const std::size_t comma = value.find(',');
-            std::optional<double> from = number<double>(value.substr(0, comma));
-            std::optional<double> to = comma == std::string_view::npos ? std::nullopt : number<double>(value.substr(comma + 1));
-            if (!from || !to || *from < 0 || *to < *from) return bad + " (FROM_S,TO_S with 0 <= FROM_S <= TO_S)";
-            out.overlay_from_s = *from;
-            out.overlay_to_s = *to;
+            const std::optional<std::pair<double, double>> window = ordered_pair<double>(value, ',');
+            if (!window) return bad + " (FROM_S,TO_S with 0 <= FROM_S <= TO_S)";
+            out.overlay_from_s = window->first;
+            out.overlay_to_s = window->second;
         } else if (arg == "--law") {
             if (value != "predictive" && value != "proportional") return bad + " (predictive or proportional)";
             out.law = std::string(value);

@@ -55,9 +55,9 @@ TEST_CASE("rays-soak --lockstep is a run without a budget") {
 TEST_CASE("rays-soak --seeds takes a range of seeds, for one run each, and nothing that is for one run") {
     SoakOptions o;
     REQUIRE_FALSE(parse({"--seeds", "1-6", "--scenario", "patrol", "--lockstep"}, o));
-    REQUIRE(o.first_seed);
-    CHECK(*o.first_seed == 1);
-    CHECK(*o.last_seed == 6);
+    REQUIRE(o.seeds);
+    CHECK(o.seeds->first == 1);
+    CHECK(o.seeds->second == 6);
     CHECK_FALSE(o.seed);
     SoakOptions bad[8];
     CHECK(parse({"--seeds", "6-1"}, bad[0]));

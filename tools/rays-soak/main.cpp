@@ -169,8 +169,9 @@ int over_seeds(SoakRun run, const SoakOptions& options) {
     nlohmann::json rows = nlohmann::json::array();
     long losses = 0;
     double centred = 0, on_target = 0;
-    const int count = *options.last_seed - *options.first_seed + 1;
-    for (int seed = *options.first_seed; seed <= *options.last_seed; ++seed) {
+    const auto [first, last] = *options.seeds;
+    const int count = last - first + 1;
+    for (int seed = first; seed <= last; ++seed) {
         run.config.sim.seed = seed;
         SoakSummary summary;
         std::optional<nlohmann::json> row = run_once(run, options, false, summary);
@@ -188,7 +189,7 @@ int over_seeds(SoakRun run, const SoakOptions& options) {
         return 0;
     }
     std::printf("seeds %d-%d, %ld frames each: losses %ld in all, centred %.1f %%, contour on target %.1f %% (means)\n",
-                *options.first_seed, *options.last_seed, run.frames, losses, 100 * centred, 100 * on_target);
+                first, last, run.frames, losses, 100 * centred, 100 * on_target);
     return 0;
 }
 
@@ -237,7 +238,7 @@ int main(int argc, char** argv) {
     if (options.gain) run.config.control.gain = *options.gain;
     if (options.budget_ms) run.config.loop.budget_ms = *options.budget_ms;
     if (!options.compare_gains.empty()) return compare(run, options);
-    if (options.first_seed) return over_seeds(run, options);
+    if (options.seeds) return over_seeds(run, options);
 
     std::vector<double> gains = options.sweep_gains;
     if (gains.empty()) gains.push_back(run.config.control.gain);

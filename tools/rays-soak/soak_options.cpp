@@ -67,10 +67,8 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
             if (!n || *n < 0) return bad + " (an integer ≥ 0)";
             out.seed = *n;
         } else if (arg == "--seeds") {
-            const std::optional<std::pair<int, int>> seeds = ordered_pair<int>(value, '-');
-            if (!seeds) return bad + " (A-B with 0 <= A <= B)";
-            out.first_seed = seeds->first;
-            out.last_seed = seeds->second;
+            out.seeds = ordered_pair<int>(value, '-');
+            if (!out.seeds) return bad + " (A-B with 0 <= A <= B)";
         } else if (arg == "--scenario") {
             out.scenario = std::string(value);
         } else if (arg == "--config") {
@@ -111,10 +109,10 @@ std::optional<std::string> parse_options(int argc, const char* const* argv, Soak
     const int modes = (out.gain ? 1 : 0) + (out.sweep_gains.empty() ? 0 : 1) + (out.compare_gains.empty() ? 0 : 1);
     if (modes > 1) return "--gain, --sweep-gain and --compare exclude each other";
     if (out.lockstep && out.budget_ms) return "--lockstep has no budget: no --budget-ms";
-    if (out.first_seed && out.seed) return "--seed and --seeds exclude each other";
-    if (out.first_seed && (!out.sweep_gains.empty() || !out.compare_gains.empty()))
+    if (out.seeds && out.seed) return "--seed and --seeds exclude each other";
+    if (out.seeds && (!out.sweep_gains.empty() || !out.compare_gains.empty()))
         return "--seeds runs one gain: no --sweep-gain or --compare";
-    if (out.first_seed && (!out.plot_path.empty() || !out.trace_path.empty() || !out.overlay_dir.empty()))
+    if (out.seeds && (!out.plot_path.empty() || !out.trace_path.empty() || !out.overlay_dir.empty()))
         return "--plot, --trace and --overlay are for one run: not with --seeds";
     if (!out.compare_gains.empty() && (out.law || out.method))
         return "--compare runs both laws and both methods itself: no --law or --method";

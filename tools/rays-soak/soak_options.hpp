@@ -3,6 +3,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rays::soak {
@@ -20,7 +21,7 @@ struct SoakOptions {
     std::optional<int> seed;
     // --seeds A-B: one run per seed from A to B, each summarised, then their totals: a change to the
     // tracker moves single runs by more than it moves the scenario.
-    std::optional<int> first_seed, last_seed;
+    std::optional<std::pair<int, int>> seeds;  // first, last
     std::string config_path;          // empty: raysd's built-in defaults
     std::optional<std::string> law;   // overrides control.law
     std::optional<std::string> method;  // overrides track.method

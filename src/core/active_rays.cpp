@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -78,6 +80,7 @@ float ActiveRays::appearance_cost(float nats) const {
     return static_cast<float>(t_.appearance_weight) * std::min(nats / LikelihoodMap::kMaxLogOdds, kAppearanceCap);
 }
 
+RAYS_FRAME_KERNEL
 void ActiveRays::shoot(int ray, const FloatImage& image, Point m, const PolarPrior& prior, bool use_temporal,
                        const TargetModel& model) {
     Hypothesis* hyp = &hyp_[static_cast<std::size_t>(ray) * capacity_.max_hypotheses];
@@ -208,6 +211,7 @@ void ActiveRays::solve(float radius, const PolarPrior& prior) {
         if (has_edge(j)) lambda_out_[node_ray_[j]] = lambda_of(j);
 }
 
+RAYS_FRAME_KERNEL
 void ActiveRays::write_contour(Point m, Contour& out) const {
     const int n = table_.count();
     int size = 0, none = 0;

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <utility>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -157,6 +159,7 @@ float AppearanceModel::log_odds(int b) {
     return log_odds_[b];
 }
 
+RAYS_FRAME_KERNEL
 void AppearanceModel::likelihood(const GreyImage& luma, const Chroma& chroma, LikelihoodMap& out) {
     for (int j = 0; j < kChromaSize; ++j)
         for (int i = 0; i < kChromaSize; ++i)

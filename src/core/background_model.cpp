@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -29,6 +31,7 @@ const FloatImage* BackgroundModel::foreground() const {
     return ready() && foreground_area_ <= kMaxForegroundShare * kFramePixels ? &foreground_ : nullptr;
 }
 
+RAYS_FRAME_KERNEL
 void BackgroundModel::rate(const FloatImage& smoothed) {
     if (!ready()) return;
     const auto noise = static_cast<float>(noise_);
@@ -42,6 +45,7 @@ void BackgroundModel::rate(const FloatImage& smoothed) {
     foreground_area_ = area * kSampleStride;
 }
 
+RAYS_FRAME_KERNEL
 void BackgroundModel::learn(const FloatImage& smoothed, const Contour* target) {
     if (frames_ == 0) {
         background_ = smoothed;

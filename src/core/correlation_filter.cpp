@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/frame_kernel.hpp"
 #include "core/lanes.hpp"
 
 namespace rays {
@@ -138,6 +139,7 @@ void CorrelationFilter::inverse_real(const HalfSpectrum& half, Plane& out) {
         }
 }
 
+RAYS_FRAME_KERNEL
 void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma, Point centre, int pairs) {
     const double step = window_px_ / kN;
     const bool colour = chroma.present;
@@ -285,6 +287,7 @@ void CorrelationFilter::learn_located(const FloatImage& image, const Chroma& chr
     window_px_ += rate * (wanted - window_px_);  // from the next frame on
 }
 
+RAYS_FRAME_KERNEL
 void CorrelationFilter::blend(double du, double dv, bool fresh, float rate) {
     // The wanted response moved by (du, dv) samples: G(k)·exp(−2πi k·d / N), one ramp per axis.
     for (int k = 0; k < kN; ++k) {

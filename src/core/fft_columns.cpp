@@ -5,6 +5,8 @@
 #include <numbers>
 #include <utility>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -48,6 +50,7 @@ FftColumns::FftColumns() {
     }
 }
 
+RAYS_FRAME_KERNEL
 void FftColumns::run(float* re, float* im, int columns, int stride, Direction direction) const {
     for (int n = 0; n < kPoints; ++n) {  // rows into bit-reversed order
         const int r = reversed_[n];

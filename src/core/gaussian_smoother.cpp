@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -13,6 +15,7 @@ constexpr int n = kFrameSize;
 // The separable passes for a kernel of radius R known at compile time: each output pixel is
 // w0·p(x) + Σ_k w_k (p(x−k) + p(x+k)), summed in a register, which the compiler vectorises.
 template <int R>
+RAYS_FRAME_KERNEL
 void smooth_radius(const float* kern, const GreyImage& in, FloatImage& horizontal, FloatImage& out) {
     // Horizontal pass over a row padded with replicated edge pixels.
     std::array<float, n + 2 * GaussianSmoother::kMaxRadius> padded;

@@ -6,6 +6,8 @@
 #include <iterator>
 #include <limits>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -33,6 +35,7 @@ int floor_half(int n) { return n >= 0 ? n / 2 : -((1 - n) / 2); }  // ⌊n / 2�
 
 bool MotionLayers::valid() const { return frames_ >= kLeastFrames; }
 
+RAYS_FRAME_KERNEL
 float MotionLayers::inside_residual(const FloatImage& before, int dx, int dy) const {
     float sum = 0.0f;
     int count = 0;
@@ -46,6 +49,7 @@ float MotionLayers::inside_residual(const FloatImage& before, int dx, int dy) co
     return count > 0 ? sum / static_cast<float>(count) : std::numeric_limits<float>::max();
 }
 
+RAYS_FRAME_KERNEL
 float MotionLayers::inside_residual(const FloatImage& before, Point shift) const {
     // A tap at x0 + fx moved back by the shift's whole part w and fraction f (0 ≤ f < 1) lies at
     // x0 − w + (fx − f), one pixel further left where fx < f.

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -83,6 +85,7 @@ void PolarPrior::resample(const RayTable& table, Point m, double lo, double hi) 
     }
 }
 
+RAYS_FRAME_KERNEL
 void PolarPrior::resample_lambda(const RayTable& table, Point m, double lo, double hi) {
     const int rays = table.count();
     double sum = 0.0;

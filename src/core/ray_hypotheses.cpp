@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/frame_kernel.hpp"
 #include "core/ray_sampler.hpp"
 
 namespace rays {
@@ -41,6 +42,7 @@ bool RayProfiler::configure(const RaysTunables& t) {
     return true;
 }
 
+RAYS_FRAME_KERNEL
 int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, const LikelihoodMap* likelihood,
                        Point m, double c, double s, float lambda_from, float lambda_limit, Hypothesis* out,
                        float& lambda_end) {

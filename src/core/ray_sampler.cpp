@@ -3,6 +3,8 @@
 
 #include <cstring>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -44,6 +46,7 @@ Pair pair_at(const float* p) {
 
 }  // namespace
 
+RAYS_FRAME_KERNEL
 void sample_ray(const FloatImage& image, const LikelihoodMap* likelihood, float x_first, float y_first, float dx,
                 float dy, int n, float* grey, float* log_odds) {
     constexpr int kCells = LikelihoodMap::kSize;

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 
+#include "common/frame_kernel.hpp"
 #include "core/lanes.hpp"
 
 namespace rays {
@@ -82,6 +83,7 @@ double RingDp::enumerate(double alpha, double beta, int* states) {
     }
 }
 
+RAYS_FRAME_KERNEL
 double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, int* states) {
     const int m = nodes_, stride = stride_;
     auto node = [&](int t) { return first + t < m ? first + t : first + t - m; };  // 0 ≤ t < m
@@ -179,6 +181,7 @@ double RingDp::closed_chain(double alpha, double beta, int first, int a, int b, 
     return best;
 }
 
+RAYS_FRAME_KERNEL
 void RingDp::open_first_order(double alpha, int* states) {
     const int m = nodes_, stride = stride_;
     float* value = value_.data();  // V(s_t) for the chain so far

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -31,6 +33,7 @@ bool normalise(std::array<float, kFrameSize>& p) {
 
 }  // namespace
 
+RAYS_FRAME_KERNEL
 std::optional<double> ViewMotion::best_shift(const Profile& before, const Profile& now) {
     // cost(s): mean squared difference where now(i) and before(i − s) overlap. Every shift's sum
     // runs over i in order, all shifts side by side: independent chains of adds, not one long one.

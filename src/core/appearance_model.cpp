@@ -58,6 +58,7 @@ void AppearanceModel::fill_inside(const Contour& contour, int j0, int j1) {
     }
 }
 
+RAYS_FRAME_KERNEL
 bool AppearanceModel::learn(const GreyImage& luma, const Chroma& chroma, const Contour& contour, float rate) {
     if (!chroma.present || contour.size < 3) return false;
     double x0 = kFrameSize, y0 = kFrameSize, x1 = 0.0, y1 = 0.0;

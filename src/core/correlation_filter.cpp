@@ -85,6 +85,7 @@ void CorrelationFilter::copy_learned(const CorrelationFilter& other) {
     window_px_ = other.window_px_;
 }
 
+RAYS_FRAME_KERNEL
 void CorrelationFilter::fft2(Spectrum& plane) {
     // Along the rows: the plane transposed, so that its rows are the columns transformed.
     for (int v = 0; v < kN; ++v)
@@ -229,6 +230,7 @@ void CorrelationFilter::fill_pairs(const FloatImage& image, const Chroma& chroma
     }
 }
 
+RAYS_FRAME_KERNEL
 void CorrelationFilter::transform_window(const FloatImage& image, const Chroma& chroma, Point centre) {
     window_centre_ = centre;
     const int channels = chroma.present ? kChannels : 1 + kOrientations;
@@ -316,6 +318,7 @@ void CorrelationFilter::blend(double du, double dv, bool fresh, float rate) {
         for (Complex& a : numerator_[c]) a *= keep;
 }
 
+RAYS_FRAME_KERNEL
 FilterMatch CorrelationFilter::locate(const FloatImage& image, const Chroma& chroma, Point around) {
     if (!valid_) return {around, 0.0};
     transform_window(image, chroma, around);

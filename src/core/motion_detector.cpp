@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "common/frame_kernel.hpp"
+
 namespace rays {
 namespace {
 
@@ -210,6 +212,7 @@ Detection MotionDetector::run_pass(double threshold, int min_area_px) {
     return pass;
 }
 
+RAYS_FRAME_KERNEL
 Detection MotionDetector::detect(const GreyImage& previous, const GreyImage& current,
                                  const DetectTunables& tunables) {
     const double max_area_px = tunables.max_area_fraction * kFramePixels;

@@ -117,6 +117,7 @@ Point MotionLayers::match_shift(const FloatImage& now, const FloatImage& before,
     return best;
 }
 
+RAYS_FRAME_KERNEL
 void MotionLayers::sample_cells(const FloatImage& image, Point shift, CellPlane& out, std::array<bool, kChromaPixels>& off) {
     // Cell (i, j)'s centre 2i + 0.5 moved back by the shift lies in pixel column 2i + ox, at fx
     // beyond it: the same ox and fx for every cell (and likewise for rows). So the cells on the
@@ -158,6 +159,7 @@ void MotionLayers::add_moved(Point shift, float keep, CellPlane& out) const {
     }
 }
 
+RAYS_FRAME_KERNEL
 void MotionLayers::update(const FloatImage& now, const FloatImage& before, const Contour& contour, Point moved_by,
                           Point view) {
     if (contour.size < 3) return;

@@ -89,6 +89,7 @@ bool ViewMotion::agreed_shift(const Projections& before, const Projections& now,
     return kShare * most >= kBands;
 }
 
+RAYS_FRAME_KERNEL
 void ViewMotion::take(const FloatImage& smoothed) {
     compared_ = has_previous_;
     if (has_previous_) {

@@ -3,8 +3,8 @@
 // twice, for AVX2 and for any x86-64, and the loader picks the one this machine runs (GCC's
 // target_clones: an ifunc resolved once at start-up, an indirect call after that). AVX2 without
 // FMA does the same IEEE operations in the same order, only eight at a time where the compiler
-// vectorises, so both give the same numbers to the bit: rays-replay's records of the six realset
-// sequences were compared between a build for any x86-64 and one for AVX2 throughout, and matched.
+// vectorises, so both give the same numbers to the bit (tests/tools/test_frame_kernels.cpp runs
+// rays-replay here and under qemu-user emulating a CPU without AVX2, and compares the records).
 // Elsewhere (arm64, clang) the mark is nothing: one build, as before.
 #pragma once
 

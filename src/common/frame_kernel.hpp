@@ -13,3 +13,18 @@
 #else
 #define RAYS_FRAME_KERNEL
 #endif
+
+namespace rays {
+
+// Which build of the frame kernels this machine runs, for the reports that quote times (raysd's
+// ready line, rays-bench): the loader's choice is the CPU's AVX2, asked the same way.
+inline const char* frame_kernel_build() {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") ? "x86-64 + AVX2" : "x86-64";
+#else
+    return "one build";
+#endif
+}
+
+}  // namespace rays

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "common/angles.hpp"
+#include "common/frame_kernel.hpp"
 #include "daemon/capture_thread.hpp"
 #include "daemon/command_server.hpp"
 #include "daemon/daemon_params.hpp"
@@ -186,7 +187,7 @@ int Daemon::run() {
     CommandServer server(config_.socket, *socket, signal_fd, r.channels, handler, reload, report_status);
 
     std::string ready = "tracking: " + parts_.source->describe() + ", PTU " + parts_.ptu->name() + ", " +
-                        socket->describe();
+                        socket->describe() + ", frame kernels " + frame_kernel_build();
     log(Priority::Notice, "%s", ready.c_str());
     r.notifier.ready(ready.c_str());
 

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/frame_kernel.hpp"
 #include "daemon_process.hpp"
 #include "support/emulator.hpp"
 #include "support/eventually.hpp"
@@ -172,6 +173,8 @@ TEST_CASE("every command works over the socket, and raysctl's exit codes tell th
     CHECK(banner["protocol"]["major"] == 1);
 
     REQUIRE(daemon.wait_for_log("tracking: replay", 5s));
+    // The ready line says which build of the frame kernels runs here (the times depend on it).
+    CHECK(daemon.wait_for_log(std::string(", frame kernels ") + rays::frame_kernel_build(), 1s));
     json status;
     CHECK(eventually([&] {  // a few frames through the loop
         status = c.request({{"cmd", "status"}});

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "bench_report.hpp"
 
+#include "common/frame_kernel.hpp"
 #include "config/tracker_config_io.hpp"
 
 namespace rays::bench {
@@ -17,7 +18,7 @@ void print_report(std::FILE* out, const BenchSetup& setup, const std::vector<Tim
     std::fprintf(out, "scene %s, %zu frames, start point given in frame 0\n", setup.scene.c_str(), setup.images.size());
     std::fprintf(out, "λ %g..%g px, step %g px, K = %d, α = %g, β = %g, σ = %g px (%s)\n", r.lambda_min_px,
                  r.lambda_max_px, r.step_px, r.hypotheses, r.alpha, r.beta, r.sigma_px, setup.config_source.c_str());
-    std::fprintf(out, "%s\n\n", kTimingNote);
+    std::fprintf(out, "%s; frame kernels: %s\n\n", kTimingNote, frame_kernel_build());
 
     std::fprintf(out, "Table 2: time per frame, tracking frames only (first %d skipped), far deadline\n",
                  kWarmupFrames);
@@ -56,6 +57,7 @@ nlohmann::ordered_json report_json(const BenchSetup& setup, const std::vector<Ti
         {"anytime_rays", r.count},
         {"warmup_frames", kWarmupFrames},
         {"note", kTimingNote},
+        {"frame_kernels", frame_kernel_build()},
         {"settings", config::to_json(setup.config)},
     };
     nlohmann::ordered_json json_rows = nlohmann::ordered_json::array();

@@ -248,6 +248,18 @@ TEST_CASE("rays-soak --seeds runs each seed as --seed does and adds them up", "[
     CHECK(both["seeds"][1] == three);
     CHECK(both["seeds"][1]["config"]["seed"] == 3);
     CHECK(both["losses"] == two["losses"].get<long>() + three["losses"].get<long>());
+    // The totals by cause (every cause named, 0 or not) count each run's losses by theirs.
+    CHECK(both["loss_causes"].size() == 3);
+    long by_cause = 0;
+    for (const auto& [cause, count] : both["loss_causes"].items()) {
+        long in_runs = 0;
+        for (const auto& one : {two, three})
+            for (const auto& c : one["loss_causes"]) in_runs += c == cause;
+        CHECK(count == in_runs);
+        by_cause += count.get<long>();
+    }
+    CHECK(by_cause == both["losses"]);
+    CHECK(two["loss_causes"].size() == two["losses"]);
     CHECK(both["on_target_fraction"].get<double>() ==
           Approx((two["on_target_fraction"].get<double>() + three["on_target_fraction"].get<double>()) / 2));
     fs::remove_all(dir);

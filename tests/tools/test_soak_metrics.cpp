@@ -3,6 +3,7 @@
 // image, or the contour is off it for more than 5 frames), re-acquisition, the centred fraction and
 // the fastest speed kept before the first loss.
 #include <catch2/catch.hpp>
+#include <string>
 
 #include "soak_metrics.hpp"
 
@@ -52,6 +53,7 @@ TEST_CASE("five frames off target are forgiven, six are a loss") {
             REQUIRE(s.losses.size() == 1);
             CHECK(s.losses[0].start_s == Approx(40 * 0.04));  // the first frame off target
             CHECK(s.losses[0].reacquire_s == Approx(off * 0.04));
+            CHECK(s.losses[0].cause == LossCause::OffTarget);  // a contour, beside the target
             CHECK(s.max_speed_deg_s == 39.0);  // the fastest while on target before the loss
         }
         CHECK(s.on_target_fraction == Approx((100.0 - off) / 100.0));
@@ -68,6 +70,9 @@ TEST_CASE("the true centre leaving the image is a loss at once, and a lost conto
     CHECK(s.losses[0].reacquire_s == Approx(0.04));
     CHECK(s.losses[1].start_s == Approx(30 * 0.04));
     CHECK(s.losses[1].reacquire_s < 0);
+    CHECK(s.losses[0].cause == LossCause::LeftImage);
+    CHECK(s.losses[1].cause == LossCause::NoContour);
+    CHECK(std::string(to_string(s.losses[1].cause)) == "no contour");
     CHECK(s.max_speed_deg_s == 19.0);
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "closed_loop.hpp"
@@ -20,8 +21,11 @@ using namespace rays;
 using namespace rays::soak;
 
 nlohmann::json summary_json(const SoakSummary& s) {
-    nlohmann::json reacquire = nlohmann::json::array();
-    for (const Loss& loss : s.losses) reacquire.push_back(loss.reacquire_s);
+    nlohmann::json reacquire = nlohmann::json::array(), causes = nlohmann::json::array();
+    for (const Loss& loss : s.losses) {
+        reacquire.push_back(loss.reacquire_s);
+        causes.push_back(to_string(loss.cause));
+    }
     return {{"frames", s.frames},
             {"acquired_s", s.acquired_s},
             {"losses", s.losses.size()},
@@ -30,6 +34,7 @@ nlohmann::json summary_json(const SoakSummary& s) {
             {"max_speed_deg_s", s.max_speed_deg_s},
             {"max_speed_px_frame", s.max_speed_px_frame},
             {"reacquire_s", reacquire},
+            {"loss_causes", causes},
             {"latency_us_median", s.latency_median_us},
             {"latency_us_p99", s.latency_p99_us},
             {"pan_range_deg", {s.pan_min_deg, s.pan_max_deg}},
@@ -60,8 +65,10 @@ void print_summary(const daemon::DaemonConfig& c, const SoakSummary& s, bool loc
                 s.losses.size(), 100 * s.centred_fraction, 100 * s.on_target_fraction);
     std::printf("  fastest target kept: %.1f deg/s (%.2f px/frame)\n", s.max_speed_deg_s, s.max_speed_px_frame);
     for (const Loss& loss : s.losses) {
-        if (loss.reacquire_s < 0) std::printf("  lost at %.2f s, not re-acquired\n", loss.start_s);
-        else std::printf("  lost at %.2f s, re-acquired after %.2f s\n", loss.start_s, loss.reacquire_s);
+        if (loss.reacquire_s < 0) std::printf("  lost at %.2f s (%s), not re-acquired\n", loss.start_s, to_string(loss.cause));
+        else
+            std::printf("  lost at %.2f s (%s), re-acquired after %.2f s\n", loss.start_s, to_string(loss.cause),
+                        loss.reacquire_s);
     }
     std::printf("  loop latency (capture to PTU write): median %.0f us, p99 %.0f us\n", s.latency_median_us,
                 s.latency_p99_us);
@@ -168,6 +175,8 @@ int compare(const SoakRun& run, const SoakOptions& options) {
 int over_seeds(SoakRun run, const SoakOptions& options) {
     nlohmann::json rows = nlohmann::json::array();
     long losses = 0;
+    std::map<std::string, long> causes;  // losses by cause, in to_string's words
+    for (LossCause cause : {LossCause::NoContour, LossCause::OffTarget, LossCause::LeftImage}) causes[to_string(cause)] = 0;
     double centred = 0, on_target = 0;
     const auto [first, last] = *options.seeds;
     const int count = last - first + 1;
@@ -178,18 +187,22 @@ int over_seeds(SoakRun run, const SoakOptions& options) {
         if (!row) return 1;
         rows.push_back(*row);
         losses += static_cast<long>(summary.losses.size());
+        for (const Loss& loss : summary.losses) ++causes[to_string(loss.cause)];
         centred += summary.centred_fraction / count;
         on_target += summary.on_target_fraction / count;
     }
     if (options.json) {
-        std::printf("%s\n", nlohmann::json{{"seeds", rows}, {"losses", losses}, {"centred_fraction", centred},
-                                           {"on_target_fraction", on_target}}
+        std::printf("%s\n", nlohmann::json{{"seeds", rows}, {"losses", losses}, {"loss_causes", causes},
+                                           {"centred_fraction", centred}, {"on_target_fraction", on_target}}
                                  .dump()
                                  .c_str());
         return 0;
     }
     std::printf("seeds %d-%d, %ld frames each: losses %ld in all, centred %.1f %%, contour on target %.1f %% (means)\n",
                 first, last, run.frames, losses, 100 * centred, 100 * on_target);
+    std::printf("  losses by what their first frame off target showed:");
+    for (LossCause cause : {LossCause::NoContour, LossCause::OffTarget, LossCause::LeftImage})
+        std::printf(" %s %ld%s", to_string(cause), causes[to_string(cause)], cause == LossCause::LeftImage ? "\n" : ",");
     return 0;
 }
 

@@ -21,6 +21,15 @@ double percentile(std::vector<double> values, double q) {
 
 }  // namespace
 
+const char* to_string(LossCause cause) {
+    switch (cause) {
+        case LossCause::LeftImage: return "target left the image";
+        case LossCause::NoContour: return "no contour";
+        case LossCause::OffTarget: return "contour off the target";
+    }
+    return "?";
+}
+
 bool on_target(const SoakFrame& f) {
     return f.target_in_image && f.has_contour && distance(f.contour_px, f.truth_px) <= kOnTargetPx;
 }
@@ -48,7 +57,11 @@ SoakSummary summarise(const std::vector<SoakFrame>& frames) {
             off_run = 0;  // still acquiring
         } else if (!lost && (!f.target_in_image || off_run > kOffFramesForLoss)) {
             lost = seen_loss = true;
-            s.losses.push_back({frames[k + 1 - static_cast<std::size_t>(std::max(off_run, 1))].t_s, -1});
+            const SoakFrame& first = frames[k + 1 - static_cast<std::size_t>(std::max(off_run, 1))];
+            const LossCause cause = !first.target_in_image ? LossCause::LeftImage
+                                    : !first.has_contour   ? LossCause::NoContour
+                                                           : LossCause::OffTarget;
+            s.losses.push_back({first.t_s, -1, cause});
         } else if (lost && on) {
             lost = false;
             s.losses.back().reacquire_s = f.t_s - s.losses.back().start_s;

@@ -27,9 +27,18 @@ struct SoakFrame {
     double target_az_deg = 0, target_el_deg = 0;  // the target, world angles, relative to the rig
 };
 
+// What the first frame off target showed: where to look for the loss's cause.
+enum class LossCause {
+    LeftImage,  // the true centre was outside the image (the unit did not keep up)
+    NoContour,  // the tracker had no contour (it declared the target lost, or was still looking)
+    OffTarget,  // the tracker had a contour, away from the target (it slid onto something else)
+};
+const char* to_string(LossCause cause);
+
 struct Loss {
     double start_s = 0;     // first frame off target
     double reacquire_s = -1;  // time to be on target again; < 0: never
+    LossCause cause = LossCause::OffTarget;
 };
 
 struct SoakSummary {

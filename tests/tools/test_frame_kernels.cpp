@@ -23,7 +23,7 @@ namespace {
 
 // A colour stream (4:2:0) drawn here: a blocky world panning right and down, and a disc of other
 // colours and its own texture crossing it, so that the colour models and the motion maps run too.
-void write_colour_scene(const fs::path& path, int frames) {
+[[maybe_unused]] void write_colour_scene(const fs::path& path, int frames) {
     constexpr int n = 128, c = 64;
     std::ofstream out(path, std::ios::binary);
     out << "YUV4MPEG2 W128 H128 F25:1 Ip A1:1 C420jpeg\n";
@@ -48,8 +48,8 @@ void write_colour_scene(const fs::path& path, int frames) {
 }
 
 // rays-replay's records with the time each frame took left out (the one field that may differ).
-std::vector<nlohmann::json> records(const std::string& prefix, const fs::path& input, const std::string& init,
-                                    const fs::path& out) {
+[[maybe_unused]] std::vector<nlohmann::json> records(const std::string& prefix, const fs::path& input, const std::string& init,
+                                                     const fs::path& out) {
     const std::string command = prefix + std::string(RAYS_REPLAY) + " --input " + input.string() + " --init " + init +
                                 " --budget-us 1000000 --out " + out.string() + " 2>/dev/null";
     REQUIRE(WEXITSTATUS(std::system(command.c_str())) == 0);

@@ -9,8 +9,10 @@
 #pragma once
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define RAYS_FRAME_KERNEL_CLONES 1
 #define RAYS_FRAME_KERNEL __attribute__((target_clones("avx2", "default")))
 #else
+#define RAYS_FRAME_KERNEL_CLONES 0
 #define RAYS_FRAME_KERNEL
 #endif
 
@@ -19,7 +21,7 @@ namespace rays {
 // Which build of the frame kernels this machine runs, for the reports that quote times (raysd's
 // ready line, rays-bench): the loader's choice is the CPU's AVX2, asked the same way.
 inline const char* frame_kernel_build() {
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#if RAYS_FRAME_KERNEL_CLONES
     __builtin_cpu_init();
     return __builtin_cpu_supports("avx2") ? "x86-64 + AVX2" : "x86-64";
 #else

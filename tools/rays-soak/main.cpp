@@ -176,7 +176,7 @@ int over_seeds(SoakRun run, const SoakOptions& options) {
     nlohmann::json rows = nlohmann::json::array();
     long losses = 0;
     std::map<std::string, long> causes;  // losses by cause, in to_string's words
-    for (LossCause cause : {LossCause::NoContour, LossCause::OffTarget, LossCause::LeftImage}) causes[to_string(cause)] = 0;
+    for (LossCause cause : kLossCauses) causes[to_string(cause)] = 0;
     double centred = 0, on_target = 0;
     const auto [first, last] = *options.seeds;
     const int count = last - first + 1;
@@ -201,8 +201,8 @@ int over_seeds(SoakRun run, const SoakOptions& options) {
     std::printf("seeds %d-%d, %ld frames each: losses %ld in all, centred %.1f %%, contour on target %.1f %% (means)\n",
                 first, last, run.frames, losses, 100 * centred, 100 * on_target);
     std::printf("  losses by what their first frame off target showed:");
-    for (LossCause cause : {LossCause::NoContour, LossCause::OffTarget, LossCause::LeftImage})
-        std::printf(" %s %ld%s", to_string(cause), causes[to_string(cause)], cause == LossCause::LeftImage ? "\n" : ",");
+    for (LossCause cause : kLossCauses)
+        std::printf(" %s %ld%s", to_string(cause), causes[to_string(cause)], cause == kLossCauses.back() ? "\n" : ",");
     return 0;
 }
 

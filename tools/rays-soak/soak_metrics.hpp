@@ -4,6 +4,7 @@
 // more than 10 % of the image size from the true centre (or no contour) for more than 5 frames,
 // counted from the first frame on target (before it, the target is being acquired).
 #pragma once
+#include <array>
 #include <vector>
 
 #include "core/image.hpp"
@@ -34,6 +35,8 @@ enum class LossCause {
     OffTarget,  // the tracker had a contour, away from the target (it slid onto something else)
 };
 const char* to_string(LossCause cause);
+// Every cause, in the order the totals list them.
+inline constexpr std::array<LossCause, 3> kLossCauses = {LossCause::NoContour, LossCause::OffTarget, LossCause::LeftImage};
 
 struct Loss {
     double start_s = 0;     // first frame off target

@@ -179,7 +179,8 @@ Point Tracker::best_start(Point centre, double radius, TimePoint deadline) {
     return best;
 }
 
-bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline) {
+bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline,
+                          double max_area) {
     if (!same_target) {
         model_.reset();
         layers_.reset();
@@ -197,7 +198,7 @@ bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_targ
                            appearance_.seed(*frame_, *chroma_, m, kSeedInside * radius, kSeedRingFrom * radius,
                                             kSeedRingTo * radius));
     }
-    return first_contour(m, from, same_target, deadline);
+    return first_contour(m, from, same_target, deadline, max_area);
 }
 
 bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
@@ -216,7 +217,7 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     return first_contour(box.centre(), StartFrom::Person, false, deadline);
 }
 
-bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline) {
+bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline, double max_area) {
     attention_.reset();
     velocity_ = {};
     // A person's start is the target even where few rays find an edge on it (a target about as grey
@@ -239,6 +240,7 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         reason = attention_.check(contour_, contour_.centroid, limits);
     }
     if (reason == nullptr && from == StartFrom::Filter && !looks_like_target()) reason = "not as grey as the target";
+    if (reason == nullptr && max_area > 0.0 && contour_.area > max_area) reason = "much bigger than the target";
     if (reason != nullptr) return false;
     if (!same_target) {
         model_.reset();
@@ -301,6 +303,21 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
         last_seen_ = seen;  // where the filter looks for it again
     }
     return alike;
+}
+
+bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
+    // A person's target, once lost, is looked for at its own size: a mover whose contour is much
+    // bigger (the group that holds it, the background a pan sweeps past a runner) is not it.
+    const double lost = person_start_ ? std::max(tracked_area_, whole_area_.area()) : 0.0;
+    if (lost <= 0.0) return begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
+    const TargetModel kept = model_;
+    const AppearanceModel kept_colours = appearance_;
+    if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, lost / kReacquireAreaRatio)) return true;
+    model_ = kept;  // not the target: its learned looks are still what the filter looks for
+    appearance_ = kept_colours;
+    look_with_colours();
+    person_start_ = true;
+    return false;
 }
 
 void Tracker::learn_looks(float rate, bool located, const Point* at) {
@@ -594,7 +611,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
         } else if (has_previous_ && detection_allowed_ && view_motion_.since_previous().known) {
             result_.detection = detector_.detect(aligned_previous(), frame, tunables_.detect);
             const Detection& d = result_.detection;
-            if (d.found) found = begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
+            if (d.found) found = begin_detected(d, deadline);
         }
         result_.state = found ? TrackState::Tracking : TrackState::Detecting;
         result_.has_contour = found;

@@ -56,12 +56,17 @@ private:
     // a prediction (reacquire_at) is where the lost target should be; the filter (look_again) found
     // the lost target's looks there.
     enum class StartFrom { Person, Detector, Prediction, Filter };
-    // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks.
-    bool begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline);
+    // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks;
+    // `max_area` (px², 0: any) the most the first contour may enclose.
+    bool begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline,
+                     double max_area = 0.0);
     // Starts a track in a box: the box's ellipse the first contour's prior, its inside the target's looks.
     bool begin_box_track(const Box& box, TimePoint deadline);
     // The new track's first contour from m with the prior and looks set up: false if it is no target.
-    bool first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline);
+    bool first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline, double max_area = 0.0);
+    // A mover the detector found, as a new target; after a person's target is lost, only a mover
+    // about its size, and the lost target's looks stay learned while none is.
+    bool begin_detected(const Detection& d, TimePoint deadline);
     bool reacquire_afresh(Point m, double radius, TimePoint deadline);
     // After a loss, the filter looks for the target's looks round where it was last seen, then over
     // the whole frame: true, and the track resumes, where it finds them and a contour round them as

@@ -585,3 +585,70 @@ TEST_CASE("Tracker refuses a box it cannot start in and keeps the start it had",
     CHECK(std::string(rays::box_problem({0, 0, 0, 5})).find("above 0") != std::string::npos);
     CHECK(std::string(rays::box_problem({0, 0, 129, 5})).find("inside") != std::string::npos);
 }
+
+namespace {
+
+// A still camera over a lightly textured plain: dark disc A (radius 7, grey 60) walks right along
+// y = 36 and is gone from frame kGone; from frame kBig a dark disc as grey but of radius 26 walks
+// left along y = 92, and from frame kBack a disc like A walks right along y = 64.
+struct BigMover {
+    static constexpr int kGone = 25, kBig = 27, kBack = 55;
+    static constexpr double kRadius = 7.0, kBigRadius = 26.0;
+    SteadyClock clock;
+    Tracker tracker{TrackerConfig{}, clock};
+    rays::GreyImage image;
+
+    static double big_x(int index) { return 118.0 - 1.5 * (index - kBig); }
+    static double back_x(int index) { return 16.0 + 1.5 * (index - kBack); }
+
+    TrackState step(int index) {
+        for (int y = 0; y < rays::kFrameSize; ++y)
+            for (int x = 0; x < rays::kFrameSize; ++x) {
+                double grey = 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
+                const bool a = index < kGone && std::hypot(x - (20.0 + 1.5 * index), y - 36.0) <= kRadius;
+                const bool big = index >= kBig && std::hypot(x - big_x(index), y - 92.0) <= kBigRadius;
+                const bool back = index >= kBack && std::hypot(x - back_x(index), y - 64.0) <= kRadius;
+                if (a || big || back) grey = 60.0;
+                image.at(x, y) = static_cast<std::uint8_t>(grey);
+            }
+        return tracker.process(image, rays::TimePoint::max()).state;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("Tracker looks for a person's lost target at its own size: a much bigger mover is not it", "[tracker]") {
+    BigMover run;
+    run.step(0);
+    run.tracker.start_at({20.0, 36.0});
+    int i = 1;
+    for (; i < BigMover::kGone; ++i) REQUIRE(run.step(i) == TrackState::Tracking);
+    const double target_area = run.tracker.contour().area;
+    REQUIRE(target_area > 100.0);
+    for (; i < BigMover::kBack; ++i) {
+        INFO("frame " << i << ": only the big mover moves");
+        run.step(i);
+        CHECK_FALSE(run.tracker.result().has_contour);
+    }
+    int found_at = -1;
+    for (; i < BigMover::kBack + 30 && found_at < 0; ++i)
+        if (run.step(i) == TrackState::Tracking) found_at = i;
+    INFO("the disc like the target walks from frame " << BigMover::kBack << ", tracked from " << found_at);
+    REQUIRE(found_at > 0);
+    const rays::Contour& c = run.tracker.contour();
+    CHECK(std::hypot(c.centroid.x - BigMover::back_x(found_at), c.centroid.y - 64.0) < 4.0);
+    CHECK(c.area < 2.0 * target_area);
+}
+
+TEST_CASE("Tracker started by detection takes the next mover whatever its size", "[tracker]") {
+    BigMover run;  // no person chose the first disc: the big mover is as good a target
+    int i = 0;
+    while (i < 10 && run.step(i) != TrackState::Tracking) ++i;
+    REQUIRE(i < 10);
+    for (i = i + 1; i < BigMover::kGone; ++i) REQUIRE(run.step(i) == TrackState::Tracking);
+    bool took_big = false;
+    for (; i < BigMover::kBack && !took_big; ++i)
+        took_big = run.step(i) == TrackState::Tracking &&
+                   std::hypot(run.tracker.contour().centroid.x - BigMover::big_x(i), run.tracker.contour().centroid.y - 92.0) < 6.0;
+    CHECK(took_big);
+}

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the unit does while no target is tracked: hold still (so frame differencing can find the
-// target again), and after a timeout either keep holding, search — stepping the pan axis through
+// target again) — where the target was last seen, when a prediction followed after it led nowhere —
+// and after a timeout either keep holding, search — stepping the pan axis through
 // poses left and right of where the target was lost, dwelling at each so detection can run — or
 // return to the home pose.
 #pragma once
@@ -23,8 +24,11 @@ struct LostSettings {
 class LostPolicy {
 public:
     void set_settings(const LostSettings& settings) { settings_ = settings; }
-    // The target was lost at t_s with the unit at (pan, tilt).
+    // The target was lost at t_s with the unit at (pan, tilt): it holds still there.
     void lost_at(double t_s, double pan_rad, double tilt_rad);
+    // The target was lost at t_s after the unit had followed its prediction without finding it
+    // again: the unit goes back to (pan, tilt), where it was last seen, and holds still there.
+    void lost_after_coasting(double t_s, double pan_rad, double tilt_rad);
     // The command t_s seconds on the loop's clock: zero velocity, or a position command.
     ptu::PtuCommand command(double t_s) const;
 
@@ -32,6 +36,7 @@ private:
     LostSettings settings_;
     double lost_s_ = 0;
     double pan_ = 0, tilt_ = 0;
+    bool go_back_ = false;  // holding means going back to (pan_, tilt_), not stopping where it is
 };
 
 }  // namespace rays::control

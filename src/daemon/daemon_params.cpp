@@ -108,7 +108,7 @@ void add_control(ParamTable<DaemonConfig>& table) {
              "predictive: after losing the contour, follow the prediction and look for the target where it "
              "should be for this long (only a target seen 10 frames in a row before: otherwise stop at once)")
         .add_choice("lost_action", &ControlSettings::lost_action, "hold|search|home",
-                    "with no target for lost_timeout_s: keep holding still, search left and right, or go home")
+                    "with no target for lost_timeout_s: keep holding still, search left and right, or go home (after coast_s on a prediction that found nothing, first back to where the target was last seen)")
         .add("lost_timeout_s", &ControlSettings::lost_timeout_s, "s", 0, 3600,
              "the unit holds still this long after losing the target (detection needs a still camera)")
         .add("search_step_deg", &ControlSettings::search_step_deg, "deg", 0.1, 180, "search: pan step between poses")

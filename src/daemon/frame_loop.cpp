@@ -210,6 +210,8 @@ void FrameLoop::track_frame(TimePoint now) {
         target_area_.update(contour.area);
         controller_->sighted(contour.centroid, at_capture, confidence);
         last_sighting_s_ = at_capture.t_s;
+        last_seen_ = control::CameraModel::from_intrinsics(tunables_.control.intrinsics)
+                         .world_angles(contour.centroid, at_capture.pan, at_capture.tilt);
         ++sighted_run_;
     } else {
         if (sighted_run_ > 0) run_before_gap_ = sighted_run_;
@@ -223,7 +225,13 @@ void FrameLoop::track_frame(TimePoint now) {
         // One the tracker found it was not on (background) is lost at once too: the controller
         // followed the background, and its prediction would lead back there.
         controller_->lost();
-        lost_policy_.lost_at(at_capture.t_s, at_capture.pan, at_capture.tilt);
+        // A prediction followed for coast_s without finding the target again led nowhere (a
+        // contour that crept along with the unit's own motion can lead it far): back to where the
+        // target was last seen.
+        if (!result.off_target && at_capture.t_s - last_sighting_s_ > tunables_.control.coast_s)
+            lost_policy_.lost_after_coasting(at_capture.t_s, last_seen_.azimuth, last_seen_.elevation);
+        else
+            lost_policy_.lost_at(at_capture.t_s, at_capture.pan, at_capture.tilt);
     }
     telemetry_.frame = frame_.index;
     telemetry_.time_s = Seconds(frame_.stamp - started_).count();

@@ -102,6 +102,32 @@ TEST_CASE("the predictive controller stops outright on a still target near the c
     CHECK(c.command(still_at(1.3, 0.1, 0.0)).axes[0].value == 0.0);
 }
 
+TEST_CASE("lost after coasting: go back to where the target was last seen and hold there, or search round it") {
+    LostSettings s;
+    s.timeout_s = 2.0;
+    s.search_step_rad = 0.3;
+    s.search_steps = 1;
+    s.search_dwell_s = 1.0;
+    LostPolicy policy;
+    policy.set_settings(s);
+    policy.lost_after_coasting(10.0, 0.4, -0.1);
+    for (double t : {10.0, 11.5, 100.0}) {
+        const ptu::PtuCommand c = policy.command(t);
+        CHECK(c.axes[0].mode == ptu::CommandMode::Position);
+        CHECK(c.axes[0].value == 0.4);
+        CHECK(c.axes[1].value == -0.1);
+    }
+    s.action = LostAction::Search;
+    policy.set_settings(s);
+    CHECK(policy.command(11.5).axes[0].value == 0.4);
+    CHECK(policy.command(13.5).axes[0].value == Approx(0.7));
+    CHECK(policy.command(13.5).axes[1].value == -0.1);
+    // A loss without coasting holds still where the unit is, as before.
+    policy.lost_at(20.0, 1.0, 0.2);
+    CHECK(policy.command(20.5).axes[0].mode == ptu::CommandMode::Velocity);
+    CHECK(policy.command(20.5).axes[0].value == 0.0);
+}
+
 TEST_CASE("lost: hold, then search round the lost pose or go home") {
     LostSettings s;
     s.timeout_s = 2.0;

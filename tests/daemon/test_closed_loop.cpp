@@ -555,17 +555,42 @@ void check_goes_home(const Rig& rig, const FrameRecord& lost, std::pair<double, 
     CHECK(home.pan_rate_deg_s == 0.0);
 }
 
-// Search poses 0, +1, −1, +2, −2 steps from the pose where the target was lost, each reached and
-// held by the end of its dwell; tilt as it was.
-void check_searches(const Rig& rig, const DaemonConfig& config, const FrameRecord& lost) {
+// After coasting from `lost` on: the unit goes back to where the target was last seen (the world
+// direction of the last contour's centre before `gone_s`), away from where coasting took it, and is
+// at rest there by the end of the lost timeout. Returns that pose.
+std::pair<double, double> check_goes_back(const Rig& rig, const DaemonConfig& config, const FrameRecord& lost,
+                                          double gone_s) {
+    const FrameRecord* seen = nullptr;
+    for (const FrameRecord& f : rig.frames())
+        if (f.t_s < gone_s && f.telemetry.has_contour) seen = &f;
+    REQUIRE(seen != nullptr);
+    const control::CameraModel camera =
+        control::CameraModel::from_intrinsics(control_tunables(config.control, config.ptu.motion).intrinsics);
+    const control::WorldAngles where = camera.world_angles({seen->telemetry.ref_x, seen->telemetry.ref_y},
+                                                           seen->pan_deg * kRadPerDeg, seen->tilt_deg * kRadPerDeg);
+    const double pan = where.azimuth / kRadPerDeg, tilt = where.elevation / kRadPerDeg;
+    const FrameRecord& last_held = at(rig, lost.t_s + kTimeout_s - 0.04);
+    INFO("last seen at " << seen->t_s << " s at pan " << pan << ", tilt " << tilt << "; coasted to pan " << lost.pan_deg
+                         << " by " << lost.t_s << " s; at " << last_held.t_s << " s: pan " << last_held.pan_deg
+                         << ", tilt " << last_held.tilt_deg << ", rate " << last_held.pan_rate_deg_s);
+    CHECK(std::abs(lost.pan_deg - pan) > 3.0);  // coasting had taken the unit away from it
+    CHECK(std::abs(last_held.pan_deg - pan) < 0.3);
+    CHECK(std::abs(last_held.tilt_deg - tilt) < 0.3);
+    CHECK(last_held.pan_rate_deg_s == 0.0);
+    return {last_held.pan_deg, last_held.tilt_deg};
+}
+
+// Search poses 0, +1, −1, +2, −2 steps from `centre` (pan, tilt), where the target was lost at
+// `lost_s`, each reached and held by the end of its dwell; tilt as it was.
+void check_searches(const Rig& rig, const DaemonConfig& config, double lost_s, std::pair<double, double> centre) {
     const double dwell = config.control.search_dwell_s, step = config.control.search_step_deg;
     const std::array<double, 5> offsets{0, step, -step, 2 * step, -2 * step};
     for (std::size_t j = 0; j < offsets.size(); ++j) {
-        const FrameRecord& f = at(rig, lost.t_s + kTimeout_s + static_cast<double>(j + 1) * dwell - 0.1);
-        INFO("search pose " << j << " at " << f.t_s << " s: pan " << f.pan_deg << " (expected " << lost.pan_deg + offsets[j]
-                            << "), tilt " << f.tilt_deg << " (expected " << lost.tilt_deg << ")");
-        CHECK(std::abs(f.pan_deg - (lost.pan_deg + offsets[j])) < 0.3);
-        CHECK(std::abs(f.tilt_deg - lost.tilt_deg) < 0.3);
+        const FrameRecord& f = at(rig, lost_s + kTimeout_s + static_cast<double>(j + 1) * dwell - 0.1);
+        INFO("search pose " << j << " at " << f.t_s << " s: pan " << f.pan_deg << " (expected " << centre.first + offsets[j]
+                            << "), tilt " << f.tilt_deg << " (expected " << centre.second << ")");
+        CHECK(std::abs(f.pan_deg - (centre.first + offsets[j])) < 0.3);
+        CHECK(std::abs(f.tilt_deg - centre.second) < 0.3);
         CHECK(f.pan_rate_deg_s == 0.0);
     }
 }
@@ -596,10 +621,10 @@ TEST_CASE("closed loop: after release, the search policy holds for the timeout, 
     check_was_tracking(rig, kGone_s);
     const FrameRecord& released = at(rig, kGone_s);
     check_holds(rig, released);
-    check_searches(rig, config, released);
+    check_searches(rig, config, released.t_s, {released.pan_deg, released.tilt_deg});
 }
 
-TEST_CASE("closed loop: when the target vanishes, the loop coasts, holds for the timeout, then goes home") {
+TEST_CASE("closed loop: when the target vanishes, the loop coasts, goes back to where it was last seen, holds for the timeout, then goes home") {
     const DaemonConfig config = lost_config("home");
     Rig rig(config, camera_for(config, vanishing_disc()));
     rig.run_until(kGone_s + config.control.coast_s + kTimeout_s + 2.0, track_truth_at_start(rig));
@@ -608,18 +633,17 @@ TEST_CASE("closed loop: when the target vanishes, the loop coasts, holds for the
     const FrameRecord& lost = stop_frame(rig, kGone_s);
     CHECK(lost.t_s >= kGone_s + config.control.coast_s - 0.05);
     CHECK(lost.t_s <= kGone_s + config.control.coast_s + 0.05);
-    check_goes_home(rig, lost, check_holds(rig, lost));
+    check_goes_home(rig, lost, check_goes_back(rig, config, lost, kGone_s));
 }
 
-TEST_CASE("closed loop: when the target vanishes, the loop coasts, holds for the timeout, then searches around where it was lost") {
+TEST_CASE("closed loop: when the target vanishes, the loop coasts, goes back to where it was last seen, holds, then searches around there") {
     const DaemonConfig config = lost_config("search");
     Rig rig(config, camera_for(config, vanishing_disc()));
     rig.run_until(kGone_s + config.control.coast_s + kTimeout_s + 5 * config.control.search_dwell_s + 0.2,
                   track_truth_at_start(rig));
     check_was_tracking(rig, kGone_s);
     const FrameRecord& lost = stop_frame(rig, kGone_s);
-    check_holds(rig, lost);
-    check_searches(rig, config, lost);
+    check_searches(rig, config, lost.t_s, check_goes_back(rig, config, lost, kGone_s));
 }
 
 // ---------------------------------------------------------------------------------------------

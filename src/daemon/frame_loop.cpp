@@ -209,9 +209,8 @@ void FrameLoop::track_frame(TimePoint now) {
         const double confidence = shown >= whole ? 1.0 : std::pow(shown / whole, 4.0);
         target_area_.update(contour.area);
         controller_->sighted(contour.centroid, at_capture, confidence);
-        last_sighting_s_ = at_capture.t_s;
-        last_seen_ = control::CameraModel::from_intrinsics(tunables_.control.intrinsics)
-                         .world_angles(contour.centroid, at_capture.pan, at_capture.tilt);
+        last_seen_at_ = at_capture;
+        last_seen_pixel_ = contour.centroid;
         ++sighted_run_;
     } else {
         if (sighted_run_ > 0) run_before_gap_ = sighted_run_;
@@ -219,7 +218,7 @@ void FrameLoop::track_frame(TimePoint now) {
     }
     if (!result.has_contour && controller_->has_target() &&
         (result.off_target || !controller_->expected_pixel(at_capture) || !controller_->can_coast() ||
-         run_before_gap_ < kCoastRun || at_capture.t_s - last_sighting_s_ > tunables_.control.coast_s)) {
+         run_before_gap_ < kCoastRun || at_capture.t_s - last_seen_at_.t_s > tunables_.control.coast_s)) {
         // A target the controller cannot predict, or not trust to (its estimate not settled, or the
         // target seen only briefly before this gap), is lost at once; a predicted one after coast_s.
         // One the tracker found it was not on (background) is lost at once too: the controller
@@ -228,9 +227,12 @@ void FrameLoop::track_frame(TimePoint now) {
         // A prediction followed for coast_s without finding the target again led nowhere (a
         // contour that crept along with the unit's own motion can lead it far): back to where the
         // target was last seen.
-        if (!result.off_target && at_capture.t_s - last_sighting_s_ > tunables_.control.coast_s)
-            lost_policy_.lost_after_coasting(at_capture.t_s, last_seen_.azimuth, last_seen_.elevation);
-        else
+        if (!result.off_target && at_capture.t_s - last_seen_at_.t_s > tunables_.control.coast_s) {
+            const auto camera = control::CameraModel::from_intrinsics(tunables_.control.intrinsics);
+            const control::WorldAngles seen =
+                camera.world_angles(last_seen_pixel_, last_seen_at_.pan, last_seen_at_.tilt);
+            lost_policy_.lost_after_coasting(at_capture.t_s, seen.azimuth, seen.elevation);
+        } else
             lost_policy_.lost_at(at_capture.t_s, at_capture.pan, at_capture.tilt);
     }
     telemetry_.frame = frame_.index;

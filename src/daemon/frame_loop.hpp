@@ -70,8 +70,8 @@ private:
     control::PredictiveController predictive_;
     control::Controller* controller_;  // one of the two, by control.law
     control::LostPolicy lost_policy_;
-    double last_sighting_s_ = 0.0;  // capture time of the last frame with a contour
-    control::WorldAngles last_seen_;  // ... and where its centre was
+    control::UnitPose last_seen_at_;  // the unit at the capture of the last frame with a contour
+    Point last_seen_pixel_;           // ... and the contour's centre in that frame
     int sighted_run_ = 0;           // frames in a row with a contour, up to this one
     int run_before_gap_ = 0;        // ... and in the run the current gap ended
     WholeArea target_area_{0.85, 0.05};  // the tracked target's running area while whole in view, px²

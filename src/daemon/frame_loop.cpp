@@ -216,9 +216,10 @@ void FrameLoop::track_frame(TimePoint now) {
         if (sighted_run_ > 0) run_before_gap_ = sighted_run_;
         sighted_run_ = 0;
     }
+    const bool coasted_out = at_capture.t_s - last_seen_at_.t_s > tunables_.control.coast_s;
     if (!result.has_contour && controller_->has_target() &&
         (result.off_target || !controller_->expected_pixel(at_capture) || !controller_->can_coast() ||
-         run_before_gap_ < kCoastRun || at_capture.t_s - last_seen_at_.t_s > tunables_.control.coast_s)) {
+         run_before_gap_ < kCoastRun || coasted_out)) {
         // A target the controller cannot predict, or not trust to (its estimate not settled, or the
         // target seen only briefly before this gap), is lost at once; a predicted one after coast_s.
         // One the tracker found it was not on (background) is lost at once too: the controller
@@ -227,7 +228,7 @@ void FrameLoop::track_frame(TimePoint now) {
         // A prediction followed for coast_s without finding the target again led nowhere (a
         // contour that crept along with the unit's own motion can lead it far): back to where the
         // target was last seen.
-        if (!result.off_target && at_capture.t_s - last_seen_at_.t_s > tunables_.control.coast_s) {
+        if (!result.off_target && coasted_out) {
             const auto camera = control::CameraModel::from_intrinsics(tunables_.control.intrinsics);
             const control::WorldAngles seen =
                 camera.world_angles(last_seen_pixel_, last_seen_at_.pan, last_seen_at_.tilt);

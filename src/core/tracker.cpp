@@ -312,7 +312,16 @@ bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
     if (lost <= 0.0) return begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
     const TargetModel kept = model_;
     const AppearanceModel kept_colours = appearance_;
-    if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, lost / kReacquireAreaRatio)) return true;
+    const double start_grey = start_grey_;
+    if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, lost / kReacquireAreaRatio)) {
+        // A mover that looks as the person's target did at the start is that target found again: it
+        // keeps the person's standing (the watch's exemption, this bound, the grey at the start).
+        if (start_looks_.valid() && start_looks_.locate(smoothed_, *chroma_, contour_.centroid).psr >= kConfidentPsr) {
+            person_start_ = true;
+            start_grey_ = start_grey;
+        }
+        return true;
+    }
     model_ = kept;  // not the target: its learned looks are still what the filter looks for
     appearance_ = kept_colours;
     look_with_colours();

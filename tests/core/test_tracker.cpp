@@ -592,13 +592,15 @@ namespace {
 // y = 36 and is gone from frame kGone; from frame kBig a dark disc as grey but of radius 26 walks
 // left along y = 92, and from frame kBack a disc like A walks right along y = 64.
 struct BigMover {
-    static constexpr int kGone = 25, kBig = 27, kBack = 55;
+    static constexpr int kGone = 25, kBig = 27, kBack = 55, kGoneAgain = 65;
     static constexpr double kRadius = 7.0, kBigRadius = 26.0;
+    // The disc that came back is gone again from kGoneAgain, and the big mover, darker, comes only then.
+    bool leaves_again = false;
     SteadyClock clock;
     Tracker tracker{TrackerConfig{}, clock};
     rays::GreyImage image;
 
-    static double big_x(int index) { return 118.0 - 1.5 * (index - kBig); }
+    static double big_x(int index, int from) { return 118.0 - 1.5 * (index - from); }
     static double back_x(int index) { return 16.0 + 1.5 * (index - kBack); }
 
     TrackState step(int index) {
@@ -606,9 +608,11 @@ struct BigMover {
             for (int x = 0; x < rays::kFrameSize; ++x) {
                 double grey = 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
                 const bool a = index < kGone && std::hypot(x - (20.0 + 1.5 * index), y - 36.0) <= kRadius;
-                const bool big = index >= kBig && std::hypot(x - big_x(index), y - 92.0) <= kBigRadius;
-                const bool back = index >= kBack && std::hypot(x - back_x(index), y - 64.0) <= kRadius;
-                if (a || big || back) grey = 60.0;
+                const int big_from = leaves_again ? kGoneAgain + 2 : kBig;
+                const bool big = index >= big_from && std::hypot(x - big_x(index, big_from), y - 92.0) <= kBigRadius;
+                const bool back = index >= kBack && (!leaves_again || index < kGoneAgain) &&
+                                  std::hypot(x - back_x(index), y - 64.0) <= kRadius;
+                if (a || big || back) grey = big && leaves_again ? 30.0 : 60.0;
                 image.at(x, y) = static_cast<std::uint8_t>(grey);
             }
         return tracker.process(image, rays::TimePoint::max()).state;
@@ -640,6 +644,26 @@ TEST_CASE("Tracker looks for a person's lost target at its own size: a much bigg
     CHECK(c.area < 2.0 * target_area);
 }
 
+TEST_CASE("Tracker takes a mover that looks as the person's target did at the start for that target", "[tracker]") {
+    // Found again by frame differencing, the disc looks as the person's target did: it is that
+    // target, and when it is gone again it is looked for at its own size as before — the big mover
+    // still walking is not it (nor, being darker, for the filter's search).
+    BigMover run;
+    run.leaves_again = true;
+    run.step(0);
+    run.tracker.start_at({20.0, 36.0});
+    int i = 1;
+    for (; i < BigMover::kGoneAgain; ++i) run.step(i);
+    REQUIRE(run.tracker.state() == TrackState::Tracking);
+    const rays::Contour& c = run.tracker.contour();
+    REQUIRE(std::hypot(c.centroid.x - BigMover::back_x(i - 1), c.centroid.y - 64.0) < 4.0);
+    for (; i < BigMover::kGoneAgain + 20; ++i) {
+        INFO("frame " << i << ": only the big mover moves");
+        run.step(i);
+        CHECK_FALSE(run.tracker.result().has_contour);
+    }
+}
+
 TEST_CASE("Tracker started by detection takes the next mover whatever its size", "[tracker]") {
     BigMover run;  // no person chose the first disc: the big mover is as good a target
     int i = 0;
@@ -649,6 +673,6 @@ TEST_CASE("Tracker started by detection takes the next mover whatever its size",
     bool took_big = false;
     for (; i < BigMover::kBack && !took_big; ++i)
         took_big = run.step(i) == TrackState::Tracking &&
-                   std::hypot(run.tracker.contour().centroid.x - BigMover::big_x(i), run.tracker.contour().centroid.y - 92.0) < 6.0;
+                   std::hypot(run.tracker.contour().centroid.x - BigMover::big_x(i, BigMover::kBig), run.tracker.contour().centroid.y - 92.0) < 6.0;
     CHECK(took_big);
 }

@@ -604,11 +604,11 @@ struct BigMover {
     static double back_x(int index) { return 16.0 + 1.5 * (index - kBack); }
 
     TrackState step(int index) {
+        const int big_from = leaves_again ? kGoneAgain + 2 : kBig;
         for (int y = 0; y < rays::kFrameSize; ++y)
             for (int x = 0; x < rays::kFrameSize; ++x) {
                 double grey = 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
                 const bool a = index < kGone && std::hypot(x - (20.0 + 1.5 * index), y - 36.0) <= kRadius;
-                const int big_from = leaves_again ? kGoneAgain + 2 : kBig;
                 const bool big = index >= big_from && std::hypot(x - big_x(index, big_from), y - 92.0) <= kBigRadius;
                 const bool back = index >= kBack && (!leaves_again || index < kGoneAgain) &&
                                   std::hypot(x - back_x(index), y - 64.0) <= kRadius;

@@ -316,7 +316,7 @@ bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
     if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, lost / kReacquireAreaRatio)) {
         // A mover that looks as the person's target did at the start is that target found again: it
         // keeps the person's standing (the watch's exemption, this bound, the grey at the start).
-        if (start_looks_.valid() && start_looks_.locate(smoothed_, *chroma_, contour_.centroid).psr >= kConfidentPsr) {
+        if (start_looks_.locate(smoothed_, *chroma_, contour_.centroid).psr >= kConfidentPsr) {
             person_start_ = true;
             start_grey_ = start_grey;
         }

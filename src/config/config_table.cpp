@@ -82,7 +82,8 @@ void add_attention(ParamTable<TrackerConfig>& table) {
         .add("max_area_fraction", &AttentionTunables::max_area_fraction, "", 0, 1,
              "largest area of a tracked contour, as a fraction of the frame")
         .add("lost_frames", &AttentionTunables::lost_frames, "frames", 0, 1000,
-             "frames spent in 'lost' before detecting again");
+             "frames spent in 'lost' before detecting again (0: active rays look for a target the contour "
+             "check lost again by its looks in the same frame)");
 }
 
 void add_track(ParamTable<TrackerConfig>& table) {

@@ -24,6 +24,8 @@ struct FrameResult {
     bool has_contour = false;      // true while tracking
     Point predicted;               // where m was expected this frame
     Detection detection;           // the motion detector's output, on frames it ran
+    // Why the track was lost this frame; with the state tracking again, the target was found again
+    // in the same frame (attention.lost_frames = 0).
     const char* lost_reason = nullptr;
     // How surely the target's looks were found this frame: the correlation filter's peak-to-sidelobe
     // ratio where it found the target (about 5 and up: sure; 0 where it did not look, as for a new

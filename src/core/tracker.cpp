@@ -575,7 +575,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     if (result_.state == TrackState::Lost && ++lost_frames_ >= tunables_.attention.lost_frames)
         result_.state = TrackState::Detecting;
 
-    if (result_.state == TrackState::Tracking) {
+    const bool was_tracking = result_.state == TrackState::Tracking;
+    if (was_tracking) {
         track(deadline);
         // A person's target that the filter still finds, and that is as grey as it was at the start,
         // is the target, standing still or not — unless the target as it looked at the start is
@@ -591,7 +592,14 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
             result_.off_target = true;
             filter_.reset();  // it learned the looks of something beside the mover: not to be looked for again
         }
-    } else if (result_.state == TrackState::Detecting) {
+    }
+    // A target the contour check lost is looked for again by its looks in this very frame (with
+    // attention.lost_frames at 0): still in view, they find it at once. Not a track dropped as off
+    // the target (where it stood is no place to look), and no frame differencing until the next
+    // frame (this frame's difference still shows where the target was).
+    const bool just_lost = was_tracking && result_.state == TrackState::Lost && !result_.off_target;
+    if (just_lost && tunables_.attention.lost_frames == 0) result_.state = TrackState::Detecting;
+    if (result_.state == TrackState::Detecting) {
         bool found = false;
         still_frames_ = -1;
         watched_ = !start_point_ || reacquire_;  // a person's start is the target until it moves; a guess is not
@@ -617,7 +625,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
             start_box_.reset();
         } else if (look_again(deadline)) {
             found = true;
-        } else if (has_previous_ && detection_allowed_ && view_motion_.since_previous().known) {
+        } else if (!just_lost && has_previous_ && detection_allowed_ && view_motion_.since_previous().known) {
             result_.detection = detector_.detect(aligned_previous(), frame, tunables_.detect);
             const Detection& d = result_.detection;
             if (d.found) found = begin_detected(d, deadline);

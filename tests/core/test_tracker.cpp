@@ -97,15 +97,24 @@ TEST_CASE("Tracker declares the target lost when it vanishes and finds it again"
         INFO("frame " << i);
         REQUIRE(run.step(*s, i) == TrackState::Tracking);
     }
+    // attention.lost_frames: the frames spent in "lost" before detecting again; at 0 (the default)
+    // the target is looked for again in the frame it is lost.
+    int lost_frames = 0;
+    SECTION("looked for again at once") {}
+    SECTION("one frame spent in lost") { lost_frames = 1; }
+    rays::TrackerTunables tunables = run.tracker->tunables();
+    tunables.attention.lost_frames = lost_frames;
+    REQUIRE(run.tracker->set_tunables(tunables));
     int lost_at = -1;
     for (; i < 100 && lost_at < 0; ++i)
-        if (run.step(*s, i) == TrackState::Lost) lost_at = i;
+        if (run.step(*s, i) != TrackState::Tracking) lost_at = i;
     INFO("lost at frame " << lost_at);
     REQUIRE(lost_at >= 60);
     CHECK(lost_at <= 63);
     CHECK(run.tracker->result().lost_reason != nullptr);
     CHECK_FALSE(run.tracker->result().has_contour);
-    CHECK(run.step(*s, i++) == TrackState::Detecting);  // attention.lost_frames = 1
+    CHECK(run.tracker->state() == (lost_frames == 0 ? TrackState::Detecting : TrackState::Lost));
+    CHECK(run.step(*s, i++) == TrackState::Detecting);
     for (; i < 100; ++i) {
         INFO("frame " << i << ", nothing to see");
         CHECK(run.step(*s, i) != TrackState::Tracking);

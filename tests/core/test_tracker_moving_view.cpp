@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numbers>
 
 #include "core/tracker.hpp"
 #include "scenes/scene.hpp"
@@ -27,13 +28,14 @@ struct PanningScene {
     SteadyClock clock;
     Tracker tracker{TrackerConfig{}, clock};
     std::unique_ptr<rays::scenes::SceneFrame> frame = std::make_unique<rays::scenes::SceneFrame>();
+    double size = 1.0;  // the target's size, as a share of kA, kB
 
     // Draws the view from `pan` (the view at x shows the world at x + pan) with the target centred
     // at `target` in the view (none when `hidden`), and tracks it.
     TrackState step(Point pan, Point target, bool hidden = false) {
         for (int y = 0; y < rays::kFrameSize; ++y)
             for (int x = 0; x < rays::kFrameSize; ++x) {
-                const double u = (x - target.x) / kA, v = (y - target.y) / kB;
+                const double u = (x - target.x) / (size * kA), v = (y - target.y) / (size * kB);
                 const bool on = !hidden && u * u + v * v <= 1.0;
                 const double grey = on ? smooth_blocks(x - target.x, y - target.y, 7u, 4.0, 20, 50)
                                        : smooth_blocks(x + pan.x, y + pan.y, 1u, 6.0, 100, 130);
@@ -134,4 +136,26 @@ TEST_CASE("Tracker says how surely it finds the target's looks: sure while seen,
     INFO("hidden: " << rays::to_string(hidden) << ", psr " << run.tracker.result().match_psr);
     CHECK(run.tracker.result().match_psr < 5.0);
     if (hidden != TrackState::Tracking) CHECK(run.tracker.result().match_psr == 0.0);
+}
+
+TEST_CASE("Tracker finds a target again by its looks in the frame its contour fails the check", "[tracker][view]") {
+    // The target steps away from the camera: from one frame to the next it shows at 0.69 of its
+    // size, too fast a change for the attention check, and the last contour moved to where the
+    // filter finds it holds much of the world round it. The target is lost, and looked for again at
+    // once by its looks (attention.lost_frames = 0): it is tracking again in that same frame, which
+    // reports why the track was lost.
+    PanningScene run;
+    const Point start{40.0, 64.0};
+    REQUIRE(run.tracker.start_in({start.x - PanningScene::kA, start.y - PanningScene::kB, 2 * PanningScene::kA + 1,
+                                  2 * PanningScene::kB + 1}));
+    for (int i = 0; i < 25; ++i) {
+        if (i == 15) run.size = 0.69;
+        const Point target{start.x + 0.5 * i, start.y};
+        INFO("frame " << i);
+        REQUIRE(run.step({0.5 * i, 0.0}, target) == TrackState::Tracking);
+        CHECK(run.on_target());
+        if (i == 15) CHECK(run.tracker.result().lost_reason != nullptr);
+    }
+    const double shown = std::numbers::pi * 0.69 * PanningScene::kA * 0.69 * PanningScene::kB;
+    CHECK(run.tracker.contour().area == Approx(shown).epsilon(0.3));
 }

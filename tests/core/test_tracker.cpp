@@ -357,23 +357,29 @@ namespace {
 // follow it there). `textured`: A's inside is striped (its mean grey 60 all the same), the still disc
 // stays flat.
 struct LeftBehind {
-    explicit LeftBehind(double left_grey_level, bool textured_target = false)
-        : left_grey(left_grey_level), textured(textured_target) {}
+    explicit LeftBehind(double left_grey_level, bool textured_target = false, bool camera_follows = false)
+        : left_grey(left_grey_level), textured(textured_target), followed(camera_follows) {}
     static constexpr int kSwap = 30;
     double left_grey;
     bool textured;
+    bool followed;  // up to the swap the camera follows A: A stands still in the image, the world slides
     SteadyClock clock;
     Tracker tracker{TrackerConfig{}, clock};
     rays::GreyImage image;
 
-    double a_x(int index) const { return index < kSwap ? 20.0 + 1.5 * index : 20.0 + 1.5 * (index - kSwap); }
+    double a_x(int index) const {
+        if (index >= kSwap) return 20.0 + 1.5 * (index - kSwap);
+        return followed ? left_x() : 20.0 + 1.5 * index;
+    }
     double a_y(int index) const { return index < kSwap ? 36.0 : 96.0; }
     double left_x() const { return 20.0 + 1.5 * kSwap; }
+    // How far the camera has turned: the view at x shows the world at x + pan.
+    double pan(int index) const { return followed ? 1.5 * std::min(index, kSwap) : 0.0; }
 
     TrackState step(int index) {
         for (int y = 0; y < rays::kFrameSize; ++y)
             for (int x = 0; x < rays::kFrameSize; ++x) {
-                double grey = 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
+                double grey = 150.0 + 10.0 * std::sin(0.3 * (x + pan(index))) * std::cos(0.25 * y);
                 if (index >= kSwap && std::hypot(x - left_x(), y - 36.0) <= 9.0)
                     grey = 60.0 + (left_grey - 60.0) * std::min(1.0, (index - kSwap) / 20.0);
                 if (std::hypot(x - a_x(index), y - a_y(index)) <= 9.0)
@@ -419,6 +425,13 @@ TEST_CASE("Tracker drops a person's track left on something as grey as the targe
     // apart, and the learned looks have followed the track onto it; the looks at the start are found
     // on the striped target that moves on, more clearly than on the disc.
     LeftBehind run(60.0, true);
+    expect_dropped_after_swap(run);
+}
+
+TEST_CASE("Tracker drops a person's track left on something unlike the target after the camera followed the target", "[tracker]") {
+    // Up to the swap the camera follows the target, which stands still in the image while the world
+    // slides past: it has moved in the scene, and from then on the watch holds it as a mover.
+    LeftBehind run(110.0, false, true);
     expect_dropped_after_swap(run);
 }
 

@@ -524,12 +524,15 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     // Whether the track has moved since it began is judged in the scene: a camera that follows the
     // target holds it still in the image, so the view's own shifts are taken out.
     const ViewShift& view = view_motion_.since_previous();
-    if (still_frames_ < 0) view_travel_ = {};
-    else if (view.known && !view.still) view_travel_ = {view_travel_.x + view.shift.x, view_travel_.y + view.shift.y};
-    const Point in_scene{c.x - view_travel_.x, c.y - view_travel_.y};
-    if (still_frames_ < 0) began_in_scene_ = in_scene;
-    else if (std::hypot(in_scene.x - began_in_scene_.x, in_scene.y - began_in_scene_.y) >= kStillRadiusPx)
-        watched_ = true;  // it moved: a mover from now on
+    if (still_frames_ < 0) {
+        view_travel_ = {};
+        began_in_scene_ = c;
+    } else {
+        if (view.known && !view.still) view_travel_ = {view_travel_.x + view.shift.x, view_travel_.y + view.shift.y};
+        const Point in_scene{c.x - view_travel_.x, c.y - view_travel_.y};
+        if (std::hypot(in_scene.x - began_in_scene_.x, in_scene.y - began_in_scene_.y) >= kStillRadiusPx)
+            watched_ = true;  // it moved in the scene: a mover from now on
+    }
     if (still_frames_ < 0 || std::hypot(c.x - still_at_.x, c.y - still_at_.y) >= kStillRadiusPx) {
         watched_ = watched_ || still_frames_ >= 0;  // it moved: a mover from now on
         still_at_ = c;
@@ -606,8 +609,9 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     // attention.lost_frames at 0): still in view, they find it at once. Not a track dropped as off
     // the target (where it stood is no place to look), and no frame differencing until the next
     // frame (this frame's difference still shows where the target was).
-    const bool just_lost = was_tracking && result_.state == TrackState::Lost && !result_.off_target;
-    if (just_lost && tunables_.attention.lost_frames == 0) result_.state = TrackState::Detecting;
+    const bool just_lost = was_tracking && result_.state == TrackState::Lost && !result_.off_target &&
+                           tunables_.attention.lost_frames == 0;
+    if (just_lost) result_.state = TrackState::Detecting;
     if (result_.state == TrackState::Detecting) {
         bool found = false;
         still_frames_ = -1;

@@ -52,7 +52,7 @@ struct AttentionTunables {
     double max_none_fraction = 0.6;   // attention.max_none_fraction: rays with no edge
     double min_area_px = 20.0;        // attention.min_area_px
     double max_area_fraction = 0.6;   // attention.max_area_fraction: of the frame
-    int lost_frames = 0;              // attention.lost_frames: frames spent in "lost" before detecting again
+    int lost_frames = 0;              // attention.lost_frames: frames spent in "lost" before detecting again (0: none)
 };
 
 // The greedy active contour of Williams & Shah (1992), the baseline the product compares active rays

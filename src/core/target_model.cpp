@@ -69,20 +69,18 @@ void TargetModel::seed_inside(const FloatImage& image, const Box& box) {
     inside_spread = std::sqrt(std::max(0.0f, sq / static_cast<float>(n) - mean * mean));
 }
 
-float TargetModel::follow_exposure(float mean) {
+void TargetModel::follow_exposure(float mean) {
     constexpr float kDarkest = 1.0f;  // grey: below this the frame says nothing about exposure
     constexpr float kStep = 0.05f;    // a change of the frame's mean by more than this in one frame is an
                                       // exposure step; slower changes (scene, drift) are left to learning
-    const float ratio = frame_mean > kDarkest && mean > kDarkest ? mean / frame_mean : 1.0f;
-    const float gain = std::abs(ratio - 1.0f) > kStep ? ratio : 1.0f;
-    if (valid) {
+    const float gain = frame_mean > kDarkest ? mean / frame_mean : 1.0f;
+    if (valid && mean > kDarkest && std::abs(gain - 1.0f) > kStep) {
         for (float& m : inside_mean) m *= gain;
         for (float& m : outside_mean) m = m < 0 ? m : m * gain;
         inside_spread *= gain;
         rim_contrast *= gain;
     }
     frame_mean = mean;
-    return gain;
 }
 
 void TargetModel::learn(const Contour& contour, std::vector<float>& scratch) {

@@ -33,8 +33,7 @@ struct TargetModel {
     void learn(const Contour& contour, std::vector<float>& scratch);
     // The whole frame's mean grey is now `mean`: when it jumped from the last frame's (an exposure
     // step), the learned grey levels and contrasts scale with it, so the target still looks itself.
-    // Returns that step's gain (1 when the change was gradual: scene or drift, left to learning).
-    float follow_exposure(float mean);
+    void follow_exposure(float mean);
 };
 
 }  // namespace rays

@@ -259,7 +259,7 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     model_.learn(contour_, scratch_);
     // A person's target as it looked at the start: the learned looks drift with the contour, this does not.
     if (from == StartFrom::Person && !same_target) {
-        start_grey_ = mean_inside_grey(contour_);
+        start_grey_ = inside_grey_share();
         start_looks_.copy_learned(filter_);
     }
     if (from == StartFrom::Detector) start_grey_ = 0.0;
@@ -437,9 +437,10 @@ bool Tracker::looks_like_target() const {
 
 bool Tracker::knows_target() const { return person_start_ || rim_frames_ >= kKnownFrames; }
 
+double Tracker::inside_grey_share() const { return mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0); }
+
 bool Tracker::as_grey_as_at_start() const {
-    return start_grey_ > 0.0 &&
-           std::abs(mean_inside_grey(contour_) - start_grey_) <= kReacquireGreyTolerance * std::max<double>(model_.frame_mean, 1.0);
+    return start_grey_ > 0.0 && std::abs(inside_grey_share() - start_grey_) <= kReacquireGreyTolerance;
 }
 
 bool Tracker::look_again(TimePoint deadline) {
@@ -572,7 +573,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
         for (int k = 0; k < 8; ++k) sums[k] += smoothed_.px[i + k];
     float sum = 0.0f;
     for (float s : sums) sum += s;
-    start_grey_ *= model_.follow_exposure(sum / static_cast<float>(kFramePixels));
+    model_.follow_exposure(sum / static_cast<float>(kFramePixels));
     // The caller says whether the camera was to hold still; the view's own motion says whether it
     // did (a recording, a camera shaken or on a vehicle). Frame differencing needs the view's shift
     // known, to align the two frames. The background is kept on the caller's word, and only for the

@@ -84,6 +84,8 @@ private:
     // Whether this frame's contour encloses about the grey a person's target had at its start: what
     // the learned looks cannot tell once they have drifted onto background with the contour.
     bool as_grey_as_at_start() const;
+    // This frame's contour's inside grey over the frame's mean grey.
+    double inside_grey_share() const;
     void track(TimePoint deadline);
     // The attention check of this frame's contour, and, where the filter is `confident`, whether the
     // contour is still where the filter finds the target: nullptr, or why it is not the target.
@@ -171,7 +173,7 @@ private:
     double tracked_area_ = 0;   // area of the last contour accepted as the target
     WholeArea whole_area_;      // the target's size, for looking for it again after an occlusion
     double whole_grey_ = 0;     // its inside grey / the frame's mean grey while whole (running; 0: none yet)
-    double start_grey_ = 0;     // a person's target's inside grey at its start, through exposure steps (0: none)
+    double start_grey_ = 0;     // a person's target's inside grey / the frame's mean at its start (0: none)
     FrameResult result_;
 };
 

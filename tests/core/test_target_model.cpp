@@ -67,25 +67,6 @@ TEST_CASE("TargetModel learns the inside only from edges whose rays saw it clear
     CHECK(seeded.polarity[0] < 0.0f);  // the polarity is learned all the same
 }
 
-TEST_CASE("TargetModel scales its grey levels with an exposure step and says by how much, not with a slow change", "[target_model]") {
-    std::vector<float> scratch(static_cast<std::size_t>(TrackerCapacity{}.max_rays));
-    TargetModel model;
-    model.learn(ring(6.0f, 100.0f), scratch);
-    CHECK(model.follow_exposure(100.0f) == 1.0f);  // the first frame: nothing to compare with
-    // 2 % in one frame is the scene or drift, left to learning.
-    CHECK(model.follow_exposure(102.0f) == 1.0f);
-    CHECK(model.inside_mean[0] == Approx(70.0f));
-    // 20 % in one frame is an exposure step: the learned grey follows it, and the caller is told.
-    const float gain = model.follow_exposure(122.4f);
-    CHECK(gain == Approx(1.2f));
-    CHECK(model.inside_mean[0] == Approx(84.0f));
-    CHECK(model.outside_mean[0] == Approx(144.0f));
-    // A model not learned yet has nothing to scale, but the step is still told.
-    TargetModel empty;
-    empty.follow_exposure(100.0f);
-    CHECK(empty.follow_exposure(50.0f) == Approx(0.5f));
-}
-
 TEST_CASE("PolarPrior marks the rays that cross the previous contour where it had no edge", "[polar_prior]") {
     // A square of 8 points round (64, 64), the point straight right of m (angle 0) without an edge.
     const Point m{64.0, 64.0};

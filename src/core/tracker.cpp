@@ -214,7 +214,9 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     // (its corners) is as common round it, so its colours come out near even (Staple's seed).
     use_seeded_colours(tunables_.rays.appearance_weight > 0.0 &&
                        appearance_.seed_box(*frame_, *chroma_, box, kBoxBand * std::max(box.w, box.h)));
-    return first_contour(box.centre(), StartFrom::Person, false, deadline);
+    // The box's centre need not lie on the target (core/box_start.hpp).
+    const Point m = appearance_.valid() ? box_start_.find(box, likelihood_) : box.centre();
+    return first_contour(m, StartFrom::Person, false, deadline);
 }
 
 bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint deadline, double max_area) {

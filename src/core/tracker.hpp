@@ -10,6 +10,7 @@
 #include "core/appearance_model.hpp"
 #include "core/attention.hpp"
 #include "core/background_model.hpp"
+#include "core/box_start.hpp"
 #include "core/clock.hpp"
 #include "core/contour_tracker.hpp"
 #include "core/correlation_filter.hpp"
@@ -138,6 +139,7 @@ private:
     MotionLayers layers_;         // where things move with the target, not with the view
     bool view_moved_ = false;     // the view moved between the last two frames tracked by their rim
     LikelihoodMap likelihood_;    // this frame's colours (and motion) seen through them
+    BoxStartPoint box_start_;     // where a box start's rays begin
     CorrelationFilter filter_;    // the target's looks, to find it before the rays look for its rim
     CorrelationFilter start_looks_;  // a person's target's looks at its first contour (not learned since)
     FilterMatch match_;           // where it found the target this frame

@@ -523,28 +523,14 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     // starts again. Not while the view turns: that moves everything.
     if (!has_previous_) return true;
     const Point c = contour_.centroid;
-    // Whether the track has moved since it began is judged in the scene: a camera that follows the
-    // target holds it still in the image, so the view's own shifts are taken out.
-    const ViewShift& view = view_motion_.since_previous();
-    if (still_frames_ < 0) {
-        view_travel_ = {};
-        began_in_scene_ = c;
-    } else {
-        if (view.known && !view.still) view_travel_ = {view_travel_.x + view.shift.x, view_travel_.y + view.shift.y};
-        const Point in_scene{c.x - view_travel_.x, c.y - view_travel_.y};
-        if (std::hypot(in_scene.x - began_in_scene_.x, in_scene.y - began_in_scene_.y) >= kStillRadiusPx)
-            watched_ = true;  // it moved in the scene: a mover from now on
-    }
     if (still_frames_ < 0 || std::hypot(c.x - still_at_.x, c.y - still_at_.y) >= kStillRadiusPx) {
-        watched_ = watched_ || still_frames_ >= 0;  // it moved: a mover from now on
         still_at_ = c;
         still_frames_ = 0;
         motion_inside_ = motion_outside_ = 0;
         return true;
     }
     if (++still_frames_ % kWatchWindowFrames == 0) motion_inside_ = motion_outside_ = 0;
-    // A start point from outside is the target, moving or not, until it has moved.
-    if (still_frames_ < kStillFrames || !watched_ || !view.still) return true;
+    if (still_frames_ < kStillFrames || !view_motion_.since_previous().still) return true;
     result_.detection = detector_.detect(previous_, frame, tunables_.detect);
     const Detection& d = result_.detection;
     if (!d.found) return true;
@@ -617,7 +603,6 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     if (result_.state == TrackState::Detecting) {
         bool found = false;
         still_frames_ = -1;
-        watched_ = !start_point_ || reacquire_;  // a person's start is the target until it moves; a guess is not
         if (start_point_) {
             // Its whole size: the last contour may have been a sliver beside an occluder.
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);

@@ -166,10 +166,7 @@ private:
     int untracked_frames_ = 0;  // frames since the last one with a contour
     int still_frames_ = -1;   // frames the track has stood still near still_at_ (-1: a new track)
     Point still_at_;          // where it stands
-    Point view_travel_;       // the view's shifts summed since the track began (ViewMotion)
-    Point began_in_scene_;    // where the track began, less view_travel_ (where it is in the scene)
     bool person_start_ = false;  // a person said where the target is (start_at, start_in)
-    bool watched_ = true;     // detection started the track, or it has moved since its start point
     int motion_inside_ = 0;   // of this window's still frames, those whose motion was found in the contour
     int motion_outside_ = 0;  // ... and away from it
     double tracked_area_ = 0;   // area of the last contour accepted as the target

@@ -430,7 +430,7 @@ TEST_CASE("Tracker drops a person's track left on something as grey as the targe
 
 TEST_CASE("Tracker drops a person's track left on something unlike the target after the camera followed the target", "[tracker]") {
     // Up to the swap the camera follows the target, which stands still in the image while the world
-    // slides past: it has moved in the scene, and from then on the watch holds it as a mover.
+    // slides past; after it, the track left on the grey disc is watched like any other still track.
     LeftBehind run(110.0, false, true);
     expect_dropped_after_swap(run);
 }

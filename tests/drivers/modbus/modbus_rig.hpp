@@ -98,20 +98,25 @@ struct Rig {
     std::vector<Received> received() const { return read_record(record_path); }
 };
 
-// The 32-bit value the unit received at `address` of `slave` (high word first) in the rows after
-// `after_s`; the last such pair.
-inline bool last_value32(const std::vector<Received>& rows, int slave, int address, double after_s, std::int32_t& out) {
-    bool found = false;
+// Every 32-bit value the unit received at `address` of `slave` (high word first) in the rows after
+// `after_s`, in the order received.
+inline std::vector<std::int32_t> values32(const std::vector<Received>& rows, int slave, int address, double after_s = 0.0) {
+    std::vector<std::int32_t> values;
     unsigned high = 0;
     for (const Received& r : rows) {
         if (r.slave != slave || r.time_s < after_s) continue;
         if (r.address == address) high = r.value;
-        if (r.address == address + 1) {
-            out = static_cast<std::int32_t>((high << 16) | r.value);
-            found = true;
-        }
+        if (r.address == address + 1) values.push_back(static_cast<std::int32_t>((high << 16) | r.value));
     }
-    return found;
+    return values;
+}
+
+// The last such value.
+inline bool last_value32(const std::vector<Received>& rows, int slave, int address, double after_s, std::int32_t& out) {
+    const std::vector<std::int32_t> values = values32(rows, slave, address, after_s);
+    if (values.empty()) return false;
+    out = values.back();
+    return true;
 }
 
 }  // namespace rays::test

@@ -460,14 +460,13 @@ bool Tracker::look_again(TimePoint deadline) {
     return match.psr >= kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
 }
 
-const GreyImage& Tracker::aligned_previous() {
-    const ViewShift& view = view_motion_.since_previous();
-    if (view.still) return previous_;
+const GreyImage& Tracker::aligned_previous(Point shift) {
+    if (shift.x == 0.0 && shift.y == 0.0) return previous_;
     // This frame at x is the previous one at x − shift; where that is off the previous frame, this
     // frame's own pixel stands in (no difference there).
     for (int y = 0; y < kFrameSize; ++y)
         for (int x = 0; x < kFrameSize; ++x) {
-            const double px = x - view.shift.x, py = y - view.shift.y;
+            const double px = x - shift.x, py = y - shift.y;
             const bool off = px < 0.0 || py < 0.0 || px > kFrameSize - 1 || py > kFrameSize - 1;
             aligned_previous_.at(x, y) = off ? frame_->at(x, y)
                                              : static_cast<std::uint8_t>(std::lround(sample_bilinear(previous_, px, py)));
@@ -516,22 +515,30 @@ void Tracker::declare_lost(const char* reason) {
 bool Tracker::watch_still_track(const GreyImage& frame) {
     // Frame differencing may start a track on the background beside the moving object (the part it
     // just uncovered, or a patch that looks alike), and a track may slide off a mover onto background
-    // that looks alike and stay there while the mover walks on. Such a track stands still. While a
-    // track stands still and the view too (as the frames show it: the unit's small corrections do not
-    // move it), the detector goes on looking: motion found away from the contour frame after frame
-    // (and more often than in it) means the track is not on the mover; it is dropped, and detection
-    // starts again. Not while the view turns: that moves everything.
+    // that looks alike and stay there while the mover walks on. Such a track stands still in the
+    // scene. While a track does and the view stands still too (as the frames show it: the unit's
+    // small corrections do not move it), the detector goes on looking, on the previous frame moved by
+    // the view's drift: motion found away from the contour frame after frame (and more often than in
+    // it) means the track is not on the mover; it is dropped, and detection starts again. Not while
+    // the view turns: that moves everything.
     if (!has_previous_) return true;
     const Point c = contour_.centroid;
-    if (still_frames_ < 0 || std::hypot(c.x - still_at_.x, c.y - still_at_.y) >= kStillRadiusPx) {
+    // Still in the scene, not merely in the image: a mover the unit follows stands still in the
+    // image while the view drifts under it, however slowly.
+    const ViewShift& view = view_motion_.since_previous();
+    if (view.known) view_drift_ = {view_drift_.x + view.drift.x, view_drift_.y + view.drift.y};
+    if (still_frames_ < 0 ||
+        std::hypot(c.x - still_at_.x - view_drift_.x, c.y - still_at_.y - view_drift_.y) >= kStillRadiusPx) {
         still_at_ = c;
+        view_drift_ = {};
         still_frames_ = 0;
         motion_inside_ = motion_outside_ = 0;
         return true;
     }
     if (++still_frames_ % kWatchWindowFrames == 0) motion_inside_ = motion_outside_ = 0;
-    if (still_frames_ < kStillFrames || !view_motion_.since_previous().still) return true;
-    result_.detection = detector_.detect(previous_, frame, tunables_.detect);
+    if (still_frames_ < kStillFrames || !view.still) return true;
+    // Aligned by the drift: a still view's drift too moves a strong edge enough to show.
+    result_.detection = detector_.detect(aligned_previous(view.drift), frame, tunables_.detect);
     const Detection& d = result_.detection;
     if (!d.found) return true;
     // In it: inside the contour, or as near its centroid as its equivalent radius (a faint mover's
@@ -626,7 +633,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
         } else if (look_again(deadline)) {
             found = true;
         } else if (!just_lost && has_previous_ && detection_allowed_ && view_motion_.since_previous().known) {
-            result_.detection = detector_.detect(aligned_previous(), frame, tunables_.detect);
+            result_.detection = detector_.detect(aligned_previous(view_motion_.since_previous().shift), frame, tunables_.detect);
             const Detection& d = result_.detection;
             if (d.found) found = begin_detected(d, deadline);
         }

@@ -76,9 +76,9 @@ private:
     // The best match in the next kSearchWindows windows of a sweep over the frame on a grid of half
     // the filter's window (the sweep goes on in the next frame where this one stopped).
     FilterMatch search_frame();
-    // The previous frame aligned with this one by the view's shift (the previous frame itself when
-    // the view stood still), so that differencing shows what moved in the scene.
-    const GreyImage& aligned_previous();
+    // The previous frame aligned with this one by `shift`, the view's (the previous frame itself for
+    // none), so that differencing shows what moved in the scene.
+    const GreyImage& aligned_previous(Point shift);
     // Whether the filter knows the target: one a person pointed at, or one whose rim it has followed
     // for a while (a detector's start may be on clutter).
     bool knows_target() const;
@@ -164,8 +164,9 @@ private:
     GreyImage aligned_previous_;     // the previous frame moved as the view moved, for differencing
     int lost_frames_ = 0;
     int untracked_frames_ = 0;  // frames since the last one with a contour
-    int still_frames_ = -1;   // frames the track has stood still near still_at_ (-1: a new track)
+    int still_frames_ = -1;   // frames the track has stood still in the scene near still_at_ (-1: a new track)
     Point still_at_;          // where it stands
+    Point view_drift_;        // how far the view has moved since it stood there
     bool person_start_ = false;  // a person said where the target is (start_at, start_in)
     int motion_inside_ = 0;   // of this window's still frames, those whose motion was found in the contour
     int motion_outside_ = 0;  // ... and away from it

@@ -15,6 +15,7 @@ constexpr float kFlatSpread = 0.5f;  // grey: a profile flatter than this (a cle
 // Bands whose best match is worse (correlation below 1/2: noise, or a view that changed there)
 // tell no shift.
 constexpr double kMatchCost = 1.0;
+constexpr double kDriftClear = 2.0;  // standard errors: a still view's drift is taken where it stands this clear of 0
 
 // Removes the profile's mean and scales it to unit spread (an exposure change is not motion);
 // false when it is too flat to tell a shift.
@@ -59,19 +60,36 @@ std::optional<double> ViewMotion::best_shift(const Profile& before, const Profil
     return best - kMaxShiftPx + offset;
 }
 
-bool ViewMotion::agreed_shift(const Projections& before, const Projections& now, double& shift) {
+bool ViewMotion::agreed_shift(const Projections& before, const Projections& now, double& shift, double& drift) {
     int n = 0;
     for (int b = 0; b < kBands; ++b) {
         if (!before.tells[b] || !now.tells[b]) continue;
         if (const std::optional<double> s = best_shift(before.profile[b], now.profile[b])) shifts_[n++] = *s;
     }
-    shift = 0.0;
+    shift = drift = 0.0;
     // Still, if enough bands did not move or cannot tell (a plain background round a lone mover
-    // shows nothing else moving); else moved by the shift with the most bands within kAgreePx of it
-    // (the mean of those), if they are enough.
-    int still = kBands - n;
-    for (int i = 0; i < n; ++i) still += std::abs(shifts_[i]) < kAgreePx;
-    if (kShare * still >= kBands) return true;
+    // shows nothing else moving), drifting by the mean of the shifts those that tell measured; else
+    // moved by the shift with the most bands within kAgreePx of it (the mean of those), if they are
+    // enough.
+    int count = 0;
+    double small_sum = 0.0, small_squares = 0.0;
+    for (int i = 0; i < n; ++i)
+        if (std::abs(shifts_[i]) < kAgreePx) {
+            ++count;
+            small_sum += shifts_[i];
+            small_squares += shifts_[i] * shifts_[i];
+        }
+    const int still = kBands - n + count;
+    if (kShare * still >= kBands) {
+        // Their mean, where it stands clear of their scatter (twice its standard error): a still
+        // view's bands scatter round 0, a slow pan's round its drift.
+        if (count >= 2) {
+            const double mean = small_sum / count;
+            const double spread = std::sqrt(std::max(0.0, (small_squares - count * mean * mean) / (count - 1)));
+            if (std::abs(mean) * std::sqrt(static_cast<double>(count)) > kDriftClear * spread) drift = mean;
+        }
+        return true;
+    }
     int most = 0;
     for (int i = 0; i < n; ++i) {
         int support = 0;
@@ -86,6 +104,7 @@ bool ViewMotion::agreed_shift(const Projections& before, const Projections& now,
             shift = sum / support;
         }
     }
+    drift = shift;
     return kShare * most >= kBands;
 }
 
@@ -123,8 +142,8 @@ const ViewShift& ViewMotion::since_previous() {
     view_ = {};
     // Horizontal bands' column sums tell the shift along x, vertical bands' row sums along y.
     if (compared_) {
-        const bool x_known = agreed_shift(previous_columns_, columns_, view_.shift.x);
-        const bool y_known = agreed_shift(previous_rows_, rows_, view_.shift.y);
+        const bool x_known = agreed_shift(previous_columns_, columns_, view_.shift.x, view_.drift.x);
+        const bool y_known = agreed_shift(previous_rows_, rows_, view_.shift.y, view_.drift.y);
         view_.known = x_known && y_known;
     }
     view_.still = view_.known && view_.shift.x == 0.0 && view_.shift.y == 0.0;

@@ -22,6 +22,10 @@ struct ViewShift {
     bool known = false;  // compared with a previous frame, and enough bands agreed
     bool still = false;  // known, and the view did not move
     Point shift;         // px from the previous frame to this one: this(x) = previous(x − shift)
+    // px the view moved, as well as the bands measure it: `shift` when it moved; when still, what the
+    // bands that did not move still moved by (a slow pan moves less than kAgreePx a frame, and
+    // that adds up over frames).
+    Point drift;
 };
 
 class ViewMotion {
@@ -50,8 +54,9 @@ private:
     // The shift, sub-pixel, that best aligns `now` with `before` (both normalised); none when even
     // that one does not match.
     static std::optional<double> best_shift(const Profile& before, const Profile& now);
-    // The view's shift along one axis from the bands' shifts: false when too few bands agree.
-    bool agreed_shift(const Projections& before, const Projections& now, double& shift);
+    // The view's shift along one axis from the bands' shifts, and its drift (ViewShift::drift):
+    // false when too few bands agree.
+    bool agreed_shift(const Projections& before, const Projections& now, double& shift, double& drift);
 
     Projections columns_, rows_, previous_columns_, previous_rows_;  // x shifts from columns, y from rows
     std::array<double, kBands> shifts_{};

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Whether the view moved (core/view_motion.hpp), on views drawn here: a blocky textured world seen
-// still, panning, with a crowd crossing it, with a target the camera follows, in changing light.
+// still, panning (fast, and slower than a still view's bound), with a crowd crossing it, with a target
+// the camera follows, in changing light.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -52,6 +53,8 @@ TEST_CASE("The first frame's view motion is unknown, and a still textured view i
         CHECK(next.still);
         CHECK(next.shift.x == 0.0);
         CHECK(next.shift.y == 0.0);
+        CHECK(next.drift.x == 0.0);
+        CHECK(next.drift.y == 0.0);
     }
 }
 
@@ -71,6 +74,28 @@ TEST_CASE("A panning view is not still, and its shift is measured to a third of 
         CHECK_FALSE(v.still);
         CHECK(std::abs(v.shift.x - step.x) <= 0.3);
         CHECK(std::abs(v.shift.y - step.y) <= 0.3);
+        CHECK(v.drift.x == v.shift.x);
+        CHECK(v.drift.y == v.shift.y);
+    }
+}
+
+TEST_CASE("A view panning less than a quarter of a pixel a frame counts as still, and drifts as it pans", "[view]") {
+    // Each frame's shift is too small to count as the view moving (differencing shows little of it),
+    // but over frames it adds up: the drift says how far.
+    auto image = std::make_unique<FloatImage>();
+    ViewMotion motion;
+    const rays::Point steps[] = {{0.2, 0.0}, {0.0, -0.15}, {-0.2, 0.1}, {0.15, 0.15}};
+    rays::Point pan{10.0, 20.0};
+    view(*image, pan);
+    measure(motion, *image);
+    for (const rays::Point step : steps) {
+        pan = {pan.x - step.x, pan.y - step.y};
+        view(*image, pan);
+        const ViewShift v = measure(motion, *image);
+        INFO("step " << step.x << ", " << step.y << ": drift " << v.drift.x << ", " << v.drift.y);
+        CHECK(v.still);
+        CHECK(std::abs(v.drift.x - step.x) <= 0.06);
+        CHECK(std::abs(v.drift.y - step.y) <= 0.06);
     }
 }
 
@@ -83,8 +108,10 @@ TEST_CASE("A crowd crossing the lower half of a still view leaves it still", "[v
         for (int k = 0; k < 4; ++k) paint_mover(*image, 32.0 * k + (1.0 + 0.4 * k) * i, 64.0 + 4 * k, 26, 60 - 4 * k, 10u + k);
         const ViewShift v = measure(motion, *image);
         if (i == 0) continue;
-        INFO("frame " << i << ": measured " << v.shift.x << ", " << v.shift.y);
+        INFO("frame " << i << ": measured " << v.shift.x << ", " << v.shift.y << ", drift " << v.drift.x << ", " << v.drift.y);
         CHECK(v.still);
+        CHECK(std::abs(v.drift.x) <= 0.1);  // the crowd's bands moved; the still ones hardly
+        CHECK(std::abs(v.drift.y) <= 0.1);
     }
 }
 

@@ -29,9 +29,9 @@ struct PanningScene {
     Tracker tracker{TrackerConfig{}, clock};
     std::unique_ptr<rays::scenes::SceneFrame> frame = std::make_unique<rays::scenes::SceneFrame>();
     double size = 1.0;  // the target's size, as a share of kA, kB
-    bool poles = false;  // dark poles stand in the world every kPoleEvery px: edges that show any drift
+    bool poles = false;  // dark poles 2 kPoleHalfWidth px wide stand in the world every kPoleEvery px: edges that show any drift
 
-    static constexpr int kPoleEvery = 24, kPoleWidth = 3;
+    static constexpr int kPoleEvery = 24, kPoleHalfWidth = 3;
 
     // Draws the view from `pan` (the view at x shows the world at x + pan) with the target centred
     // at `target` in the view (none when `hidden`), and tracks it.
@@ -42,7 +42,7 @@ struct PanningScene {
                 const bool on = !hidden && u * u + v * v <= 1.0;
                 const double world_x = x + pan.x;
                 const double pole = world_x - kPoleEvery * std::floor(world_x / kPoleEvery);  // 0 … kPoleEvery
-                const double dark = poles ? std::clamp(kPoleWidth + 0.5 - std::abs(pole - kPoleWidth), 0.0, 1.0) : 0.0;
+                const double dark = poles ? std::clamp(kPoleHalfWidth + 0.5 - std::abs(pole - kPoleHalfWidth), 0.0, 1.0) : 0.0;
                 const double grey = on ? smooth_blocks(x - target.x, y - target.y, 7u, 4.0, 20, 50)
                                        : (1.0 - dark) * smooth_blocks(world_x, y + pan.y, 1u, 6.0, 100, 130) + dark * 25.0;
                 frame->image.at(x, y) = static_cast<std::uint8_t>(std::lround(grey));

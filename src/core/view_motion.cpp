@@ -68,9 +68,9 @@ bool ViewMotion::agreed_shift(const Projections& before, const Projections& now,
     }
     shift = drift = 0.0;
     // Still, if enough bands did not move or cannot tell (a plain background round a lone mover
-    // shows nothing else moving), drifting by the mean of the shifts those that tell measured; else
-    // moved by the shift with the most bands within kAgreePx of it (the mean of those), if they are
-    // enough.
+    // shows nothing else moving), drifting by the mean of the still bands' own shifts where it stands
+    // clear of their scatter; else moved by the shift with the most bands within kAgreePx of it (the
+    // mean of those), if they are enough.
     int count = 0;
     double small_sum = 0.0, small_squares = 0.0;
     for (int i = 0; i < n; ++i)

@@ -19,11 +19,6 @@ constexpr double kReacquireAreaRatio = 0.3;       // its area within this factor
 constexpr double kReacquireSideShift = 0.6;       // of the target's radius: the points beside a hidden middle
 constexpr int kFreshReacquireFrames = 10;         // ... and only this soon after the loss (a target in passing
                                                   // behind something thin, not one that is gone)
-constexpr double kStillRadiusPx = 6.0;   // a track whose centroid stays this near one point ...
-constexpr int kStillFrames = 8;          // ... this many frames stands still (slower than 0.75 px/frame);
-constexpr int kWatchWindowFrames = 20;   // while it does, the motion found in and away from it is counted
-constexpr int kMotionAwayFrames = 5;     // per this many frames: this often away (and twice as often as in
-                                         // it), and the track is not on the mover
 constexpr float kColourRate = 0.1f;      // weight of the newest contour in the learned colours (Staple: 0.04)
 constexpr double kSeedInside = 0.3;      // of a new target's radius: surely the target round its start point
 constexpr double kSeedRingFrom = 2.0;    // ... and from this many radii ...
@@ -513,43 +508,11 @@ void Tracker::declare_lost(const char* reason) {
 }
 
 bool Tracker::watch_still_track(const GreyImage& frame) {
-    // Frame differencing may start a track on the background beside the moving object (the part it
-    // just uncovered, or a patch that looks alike), and a track may slide off a mover onto background
-    // that looks alike and stay there while the mover walks on. Such a track stands still in the
-    // scene. While a track does and the view stands still too (as the frames show it: the unit's
-    // small corrections do not move it), the detector goes on looking, on the previous frame moved by
-    // the view's drift: motion found away from the contour frame after frame (and more often than in
-    // it) means the track is not on the mover; it is dropped, and detection starts again. Not while
-    // the view turns: that moves everything.
     if (!has_previous_) return true;
-    const Point c = contour_.centroid;
-    // Still in the scene, not merely in the image: a mover the unit follows stands still in the
-    // image while the view drifts under it, however slowly.
     const ViewShift& view = view_motion_.since_previous();
-    if (view.known) view_drift_ = {view_drift_.x + view.drift.x, view_drift_.y + view.drift.y};
-    if (still_frames_ < 0 ||
-        std::hypot(c.x - still_at_.x - view_drift_.x, c.y - still_at_.y - view_drift_.y) >= kStillRadiusPx) {
-        still_at_ = c;
-        view_drift_ = {};
-        still_frames_ = 0;
-        motion_inside_ = motion_outside_ = 0;
-        return true;
-    }
-    if (++still_frames_ % kWatchWindowFrames == 0) motion_inside_ = motion_outside_ = 0;
-    if (still_frames_ < kStillFrames || !view.still) return true;
-    // Aligned by the drift: a still view's drift too moves a strong edge enough to show.
+    if (!still_watch_.stands_still(contour_.centroid, view)) return true;
     result_.detection = detector_.detect(aligned_previous(view.drift), frame, tunables_.detect);
-    const Detection& d = result_.detection;
-    if (!d.found) return true;
-    // In it: inside the contour, or as near its centroid as its equivalent radius (a faint mover's
-    // difference may show only where it was, just behind its rim).
-    const double reach = std::sqrt(std::max(contour_.area, 0.0) / std::numbers::pi);
-    if (contour_contains(contour_, d.centre) || std::hypot(d.centre.x - c.x, d.centre.y - c.y) <= reach) {
-        ++motion_inside_;
-        return true;
-    }
-    ++motion_outside_;
-    return motion_outside_ < kMotionAwayFrames || motion_outside_ <= 2 * motion_inside_;
+    return still_watch_.on_mover(result_.detection, contour_);
 }
 
 const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma, TimePoint deadline) {
@@ -609,7 +572,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     if (just_lost) result_.state = TrackState::Detecting;
     if (result_.state == TrackState::Detecting) {
         bool found = false;
-        still_frames_ = -1;
+        still_watch_.restart();
         if (start_point_) {
             // Its whole size: the last contour may have been a sliver beside an occluder.
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);

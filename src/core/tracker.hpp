@@ -17,6 +17,7 @@
 #include "core/gaussian_smoother.hpp"
 #include "core/motion_detector.hpp"
 #include "core/motion_layers.hpp"
+#include "core/still_track_watch.hpp"
 #include "core/view_motion.hpp"
 
 namespace rays {
@@ -96,7 +97,8 @@ private:
     void coast_to(Point shift);
     // Whether this frame's contour encloses about the grey the target model has learned.
     bool looks_like_target() const;
-    // A track standing still on something beside the mover: false (see .cpp).
+    // A track standing still on something beside the mover: false (core/still_track_watch.hpp); the
+    // detector is asked, on this frame against the previous one aligned by the view's drift.
     bool watch_still_track(const GreyImage& frame);
     void remember_contour();
     // Learns the target's colours from this frame's contour (at `rate`; the first contour replaces
@@ -147,6 +149,7 @@ private:
     const GreyImage* frame_ = nullptr;  // the frame being processed, and its colour
     const Chroma* chroma_ = nullptr;
     Attention attention_;
+    StillTrackWatch still_watch_;  // whether a track standing still is on the mover (still_track_watch.hpp)
     Contour contour_;
     std::vector<Point> last_points_;  // the previous contour, for the temporal prior
     std::vector<unsigned char> last_open_;  // its points without an edge
@@ -164,12 +167,7 @@ private:
     GreyImage aligned_previous_;     // the previous frame moved as the view moved, for differencing
     int lost_frames_ = 0;
     int untracked_frames_ = 0;  // frames since the last one with a contour
-    int still_frames_ = -1;   // frames the track has stood still in the scene near still_at_ (-1: a new track)
-    Point still_at_;          // where it stands
-    Point view_drift_;        // how far the view has moved since it stood there
     bool person_start_ = false;  // a person said where the target is (start_at, start_in)
-    int motion_inside_ = 0;   // of this window's still frames, those whose motion was found in the contour
-    int motion_outside_ = 0;  // ... and away from it
     double tracked_area_ = 0;   // area of the last contour accepted as the target
     WholeArea whole_area_;      // the target's size, for looking for it again after an occlusion
     double whole_grey_ = 0;     // its inside grey / the frame's mean grey while whole (running; 0: none yet)

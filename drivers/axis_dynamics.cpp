@@ -110,7 +110,7 @@ void AxisDynamics::integrate(double seconds) {
         const MotionPhase phase =
             active_.mode == CommandMode::Velocity
                 ? velocity_phase(velocity_, std::clamp(active_.value, -vmax, vmax), amax)
-                : position_phase(position_, velocity_, active_.value, vmax, amax);
+                : position_phase(position_, velocity_, active_.value, std::min(vmax, config_.position_velocity_rad_s), amax);
         const double span = std::min(phase.duration, remaining);
         const double to_max_stop = first_reach(config_.max_stop_rad - position_, velocity_, phase.accel, span);
         const double to_min_stop = first_reach(position_ - config_.min_stop_rad, -velocity_, -phase.accel, span);

@@ -22,6 +22,8 @@ struct AxisDynamicsConfig {
     double latency_s = 0.0;           // from command() to effect, ≥ 0
     double min_stop_rad = -std::numeric_limits<double>::infinity();  // hard mechanical end stops
     double max_stop_rad = std::numeric_limits<double>::infinity();
+    // A position move cruises at most at this (a drive's profile velocity), and at most at max_velocity.
+    double position_velocity_rad_s = std::numeric_limits<double>::infinity();
 };
 
 class AxisDynamics {

@@ -9,7 +9,7 @@ namespace {
 AxisDynamics axis_model(const MockPtuConfig& config, Axis axis) {
     const EndStops& stops = config.end_stops[static_cast<std::size_t>(axis)];
     return AxisDynamics(AxisDynamicsConfig{config.max_velocity_rad_s, config.max_accel_rad_s2, config.latency_s,
-                                           stops.min_rad, stops.max_rad});
+                                           stops.min_rad, stops.max_rad, config.profile_velocity_rad_s});
 }
 
 }  // namespace

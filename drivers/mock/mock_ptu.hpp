@@ -11,6 +11,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <span>
@@ -30,6 +31,9 @@ struct MockPtuConfig {
     double max_velocity_rad_s = 2.0;
     double max_accel_rad_s2 = 12.0;
     double latency_s = 0.01;  // from write() to effect
+    // Position moves cruise at most at this: the drive's profile velocity, which PtuLimiter leaves to
+    // the drive (ptu_limiter.hpp) and its integrator sets within the soft limits.
+    double profile_velocity_rad_s = std::numeric_limits<double>::infinity();
     // Pan ±175°, tilt −35° to 95°: just beyond the daemon's default soft limits.
     std::array<EndStops, kAxes> end_stops{{{-3.0543, 3.0543}, {-0.6109, 1.6581}}};
     std::size_t record_capacity = 4096;  // writes kept; later ones are only counted

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "daemon/ptu_factory.hpp"
 
+#include <algorithm>
+
 #include "common/angles.hpp"
 
 #include "drivers/can/canopen/canopen_driver.hpp"
@@ -13,9 +15,12 @@
 namespace rays::daemon {
 namespace {
 
-ptu::MockPtuConfig mock_ptu_config(const MockPtuSettings& mock) {
+ptu::MockPtuConfig mock_ptu_config(const MockPtuSettings& mock, const PtuMotion& motion) {
     ptu::MockPtuConfig config;
     config.max_velocity_rad_s = mock.max_velocity_deg_s * kRadPerDeg;
+    // The simulated unit's position moves (search, home, park, goto) at the soft velocity limit, as
+    // the integrator of a real drive sets its profile velocity (PtuLimiter leaves position moves to it).
+    config.profile_velocity_rad_s = std::min(mock.max_velocity_deg_s, motion.max_velocity_deg_s) * kRadPerDeg;
     config.max_accel_rad_s2 = mock.max_accel_deg_s2 * kRadPerDeg;
     config.latency_s = mock.latency_ms / 1000.0;
     config.record_capacity = mock.record_path.empty() ? 16 : 262'144;
@@ -31,7 +36,7 @@ std::unique_ptr<ptu::PtuDriver> make_ptu_driver(const DaemonConfig& config, cons
     if (driver == "odrive") return odrive::make_odrive_driver(config.odrive, clock, error);
     if (driver == "gpio-stepper") return gpio::make_gpio_stepper_driver(config.gpio, clock, error);
     if (driver == "pwm-servo") return gpio::make_pwm_servo_driver(config.pwm, clock, error);
-    return std::make_unique<ptu::MockPtu>(mock_ptu_config(config.mock), clock);
+    return std::make_unique<ptu::MockPtu>(mock_ptu_config(config.mock, config.ptu.motion), clock);
 }
 
 }  // namespace rays::daemon

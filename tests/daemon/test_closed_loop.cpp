@@ -614,6 +614,26 @@ TEST_CASE("closed loop: after release, the lost policy holds for the timeout, th
     check_goes_home(rig, released, check_holds(rig, released));
 }
 
+TEST_CASE("closed loop: going home on a unit faster than the soft limit keeps to the soft velocity limit") {
+    // PtuLimiter leaves a position move's speed to the drive's profile; the simulated unit's profile
+    // is set within the soft limit, as an integrator sets a real drive's. A stiff unit three times
+    // faster than the limit would otherwise go home at 120 deg/s.
+    DaemonConfig config = lost_config("home");
+    config.mock.max_velocity_deg_s = 3.0 * config.ptu.motion.max_velocity_deg_s;
+    config.mock.max_accel_deg_s2 = 720;
+    Rig rig(config, camera_for(config, vanishing_disc()));
+    rig.run_until(kGone_s + kTimeout_s + 2.0, release_at(rig, kGone_s));
+    const FrameRecord& released = at(rig, kGone_s);
+    double fastest = 0.0, furthest = 0.0;
+    for (const FrameRecord& f : rig.frames()) {
+        fastest = std::max({fastest, std::abs(f.pan_rate_deg_s), std::abs(f.tilt_rate_deg_s)});
+        if (f.t_s > kGone_s) furthest = std::max(furthest, std::abs(f.pan_deg - released.pan_deg));
+    }
+    INFO("released at pan " << released.pan_deg << "; home pan " << kHomePan);
+    CHECK(furthest > 10.0);  // it went (most of the way) home
+    CHECK(fastest <= config.ptu.motion.max_velocity_deg_s + 1e-6);
+}
+
 TEST_CASE("closed loop: after release, the search policy holds for the timeout, then steps right and left of where it was") {
     const DaemonConfig config = lost_config("search");
     Rig rig(config, camera_for(config, vanishing_disc()));

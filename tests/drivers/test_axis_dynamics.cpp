@@ -100,6 +100,23 @@ TEST_CASE("AxisDynamics position moves reach the target exactly without overshoo
     }
 }
 
+TEST_CASE("AxisDynamics position moves cruise at the position velocity, velocity commands at max_velocity", "[dynamics]") {
+    AxisDynamicsConfig slow_profile = config();
+    slow_profile.position_velocity_rad_s = 0.5;  // a drive's profile velocity below its top speed
+    AxisDynamics axis(slow_profile);
+    axis.command(position(3.0), at_seconds(0.0));
+    double fastest = 0.0;
+    for (int i = 1; i <= 8000; ++i) {
+        axis.advance(at_seconds(1e-3 * i));
+        fastest = std::max(fastest, std::abs(axis.velocity()));
+    }
+    CHECK(fastest == Approx(0.5));
+    CHECK(axis.position() == Approx(3.0).margin(1e-12));
+    axis.command(velocity(-kVmax), at_seconds(8.0));  // velocity commands are the limiter's business
+    axis.advance(at_seconds(9.0));
+    CHECK(axis.velocity() == -kVmax);
+}
+
 TEST_CASE("AxisDynamics settles on a target it is too fast to stop at, after one pass", "[dynamics]") {
     AxisDynamics axis(config());
     axis.command(velocity(kVmax), at_seconds(0.0));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/still_track_watch.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 

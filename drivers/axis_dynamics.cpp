@@ -82,6 +82,10 @@ void AxisDynamics::start_at(TimePoint now) {
     started_ = true;
 }
 
+void AxisDynamics::set_position_velocity(double rad_s) {
+    config_.position_velocity_rad_s = std::isfinite(rad_s) && rad_s > 0.0 ? rad_s : std::numeric_limits<double>::infinity();
+}
+
 void AxisDynamics::advance(TimePoint now) {
     start_at(now);
     for (;;) {

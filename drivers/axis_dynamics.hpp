@@ -43,6 +43,9 @@ public:
     // From `now` on: at position_rad (within the end stops), moving at velocity_rad_s under
     // `active`, with nothing in flight.
     void reset(double position_rad, double velocity_rad_s, const AxisCommand& active, TimePoint now);
+    // A drive's profile velocity written at run time (non-positive or non-finite: none), for the
+    // position moves commanded after it.
+    void set_position_velocity(double rad_s);
     // Integrates up to `now`, applying the commands that fell due; earlier times change nothing.
     void advance(TimePoint now);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "drivers/can/sim/cia402_sim_drive.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "drivers/can/can_frame_codec.hpp"
@@ -119,6 +120,9 @@ void Cia402SimDrive::on_controlword(std::uint16_t controlword, TimePoint now) {
         const bool rising = (controlword & cw::kNewSetPoint) != 0 && (previous & cw::kNewSetPoint) == 0;
         if (rising && !acknowledged_) {
             const auto target = static_cast<std::int32_t>(get(od::kTargetPosition, 0));
+            // The profile velocity (0x6081), bounded by the max profile velocity (0x607F).
+            const auto profile = std::min(get(od::kProfileVelocity, 0), get(od::kMaxProfileVelocity, 0));
+            axis_.set_position_velocity(profile / config_.counts_per_rad);
             axis_.command(AxisCommand{CommandMode::Position, target / config_.counts_per_rad}, now);
             acknowledged_ = true;
         } else if ((controlword & cw::kNewSetPoint) == 0) {

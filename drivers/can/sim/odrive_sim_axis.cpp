@@ -45,6 +45,9 @@ void OdriveSimAxis::on_frame(const can_frame& frame, TimePoint now, can::FrameSi
             if (state_ == kAxisClosedLoop && control_mode_ == kPositionControl)
                 axis_.command({ptu::CommandMode::Position, can::get_f32(frame, 0) / config_.turns_per_rad}, now);
             break;
+        case Cmd::SetTrajVelLimit:  // the trapezoidal trajectory's cruise speed
+            axis_.set_position_velocity(can::get_f32(frame, 0) / config_.turns_per_rad);
+            break;
         case Cmd::ClearErrors:
             if (!fault_condition_) error_ = 0;
             break;

@@ -3,6 +3,7 @@
 // what the unit did reads the simulated drives (their received frames and their motion), not the
 // driver's own account.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -122,6 +123,20 @@ TEST_CASE("canopen: position commands use profile position with new set-point an
     CHECK(rig.run_until(velocities(0, 0), [&] {
         return rig.status.ok && std::abs(rig.state.axes[0].position_rad + 0.1) < 1e-3;
     }));
+    rig.driver->deactivate();
+}
+
+TEST_CASE("canopen: a position move cruises at the drives' profile velocity (0x6081), not at their top speed", "[canopen]") {
+    CanopenSettings settings = rays::test::fast_canopen_settings();
+    settings.max_velocity_deg_s = 45.0;  // the simulated drives reach 3 rad/s (172 deg/s)
+    CanopenRig rig(settings);
+    bring_up(rig);
+    double fastest = 0.0;
+    REQUIRE(rig.run_until(positions(0.6, 0.0), [&] {
+        fastest = std::max(fastest, std::abs(rig.pan.velocity_rad_s()));
+        return std::abs(rig.pan.position_rad() - 0.6) < 1e-3;
+    }));
+    CHECK(fastest * 180.0 / M_PI == Approx(45.0).epsilon(0.01));
     rig.driver->deactivate();
 }
 

@@ -80,6 +80,20 @@ TEST_CASE("odrive: velocity and position commands move the axes through the gear
     rig.driver->deactivate();
 }
 
+TEST_CASE("odrive: a position move cruises at the trajectory velocity limit, not at the axis' top speed", "[odrive]") {
+    OdriveSettings settings = rays::test::fast_odrive_settings();
+    settings.max_velocity_deg_s = 45.0;  // the simulated axes reach 3 rad/s (172 deg/s)
+    OdriveRig rig(settings);
+    bring_up(rig);
+    double fastest = 0.0;
+    REQUIRE(rig.run_until(positions(0.6, 0.0), [&] {
+        fastest = std::max(fastest, std::abs(rig.pan.velocity_rad_s()));
+        return std::abs(rig.pan.position_rad() - 0.6) < 1e-3;
+    }));
+    CHECK(fastest * 180.0 / M_PI == Approx(45.0).epsilon(0.01));
+    rig.driver->deactivate();
+}
+
 TEST_CASE("odrive: an axis error stops the other axis, clears once its cause is gone, and the axes recover", "[odrive]") {
     OdriveRig rig;
     bring_up(rig);

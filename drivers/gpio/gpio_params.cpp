@@ -32,9 +32,9 @@ void add_mechanics(ParamTable<S>& table) {
         .add("tilt_microsteps", &S::tilt_microsteps, "", 1, 256, "tilt driver microsteps per full step")
         .add("tilt_gear_ratio", &S::tilt_gear_ratio, "", 0.001, 10000, "tilt motor revolutions per axis revolution")
         .add("max_velocity_deg_s", &S::max_velocity_deg_s, "deg/s", 0.01, 10000,
-             "fastest axis speed of the step generator (keep ptu.max_velocity_deg_s within it)")
+             "fastest axis speed of the step generator (keep ptu.max_velocity_deg_s within it); raysd uses at most ptu.max_velocity_deg_s")
         .add("max_accel_deg_s2", &S::max_accel_deg_s2, "deg/s^2", 0.01, 1000000,
-             "acceleration of the step generator's ramps (keep ptu.max_accel_deg_s2 within it)")
+             "acceleration of the step generator's ramps (keep ptu.max_accel_deg_s2 within it); raysd uses at most ptu.max_accel_deg_s2")
         .add("max_step_rate_hz", &S::max_step_rate_hz, "Hz", 1, kMaxStepRateHz,
              "highest step rate per axis; max_velocity_deg_s must fit under it")
         .add("pulse_width_us", &S::pulse_width_us, "us", 1, 1000, "shortest STEP high (and low) time")
@@ -50,7 +50,8 @@ void add_switches(ParamTable<S>& table) {
         .add("limit_active_low", &S::limit_active_low, "a limit switch reads low when hit")
         .add_choice("pan_home_switch", &S::pan_home_switch, "none|min|max", "the pan limit switch homing seeks")
         .add_choice("tilt_home_switch", &S::tilt_home_switch, "none|min|max", "the tilt limit switch homing seeks")
-        .add("homing_speed_deg_s", &S::homing_speed_deg_s, "deg/s", 0.01, 1000, "speed toward and off the home switch")
+        .add("homing_speed_deg_s", &S::homing_speed_deg_s, "deg/s", 0.01, 1000,
+             "speed toward and off the home switch; raysd uses at most ptu.max_velocity_deg_s")
         .add("home_backoff_deg", &S::home_backoff_deg, "deg", 0, 90, "moved on past the point where the switch releases")
         .add("pan_home_offset_deg", &S::pan_home_offset_deg, "deg", -360, 360, "pan position reported where homing ends")
         .add("tilt_home_offset_deg", &S::tilt_home_offset_deg, "deg", -180, 180, "tilt position reported where homing ends")

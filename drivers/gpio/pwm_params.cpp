@@ -27,6 +27,8 @@ ParamTable<S> build() {
         .add("tilt_min_angle_deg", &S::tilt_min_angle_deg, "deg", -360, 360, "tilt angle at the shortest pulse")
         .add("tilt_max_angle_deg", &S::tilt_max_angle_deg, "deg", -360, 360, "tilt angle at the longest pulse")
         .add("tilt_speed_deg_s", &S::tilt_speed_deg_s, "deg/s", 1, 10000, "tilt servo's rated speed, for the position estimate")
+        .add("move_speed_deg_s", &S::move_speed_deg_s, "deg/s", 1, 10000,
+             "position moves (search, home, park, goto): the commanded angle slews at this, at most at [ptu] max_velocity_deg_s")
         .add("pan_start_deg", &S::pan_start_deg, "deg", -360, 360, "pan angle commanded at activate")
         .add("tilt_start_deg", &S::tilt_start_deg, "deg", -360, 360, "tilt angle commanded at activate")
         .add("disable_on_deactivate", &S::disable_on_deactivate,

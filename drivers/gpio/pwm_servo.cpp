@@ -41,6 +41,7 @@ bool make_pwm_config(const PwmSettings& s, PwmConfig& config, std::string& error
     config.period_ns = std::lround(s.period_ms * 1e6);
     config.disable_on_deactivate = s.disable_on_deactivate;
     config.command_timeout_s = s.command_timeout_s;
+    config.move_speed_rad_s = s.move_speed_deg_s * kRadPerDeg;
     if (s.pan_chip == s.tilt_chip && s.pan_channel == s.tilt_channel) error = "pwm: pan and tilt use the same channel";
     for (const ServoRange& range : config.ranges) {
         if (!(range.min_pulse_ns < range.max_pulse_ns) || !(range.min_rad < range.max_rad))
@@ -118,7 +119,12 @@ ptu::DriverStatus PwmServo::write(const ptu::PtuCommand& command, TimePoint now)
         servo.advance(now);
         const ptu::AxisCommand& axis = command.axes[a];
         const double value = std::isfinite(axis.value) ? axis.value : 0.0;
-        next.target_rad[a] = servo.clamp(axis.mode == ptu::CommandMode::Position ? value : servo.estimate() + value * dt);
+        // A velocity command moves the angle by value·dt; a position command slews toward its target at
+        // the move speed (the servo itself would go at its rated speed).
+        const double step = axis.mode == ptu::CommandMode::Position
+                                ? std::clamp(value - servo.estimate(), -config_.move_speed_rad_s * dt, config_.move_speed_rad_s * dt)
+                                : value * dt;
+        next.target_rad[a] = servo.clamp(servo.estimate() + step);
     }
     next.written = now;
     next.valid = true;

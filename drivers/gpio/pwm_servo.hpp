@@ -27,6 +27,7 @@ struct PwmConfig {
     long period_ns = 20000000;
     bool disable_on_deactivate = false;
     double command_timeout_s = 0.5;
+    double move_speed_rad_s = 1.5708;  // a position command's slew
 };
 
 bool make_pwm_config(const PwmSettings& settings, PwmConfig& config, std::string& error);

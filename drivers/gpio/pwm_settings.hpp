@@ -25,6 +25,7 @@ struct PwmSettings {
     double tilt_min_angle_deg = -90.0;
     double tilt_max_angle_deg = 90.0;
     double tilt_speed_deg_s = 300.0;
+    double move_speed_deg_s = 90.0;  // a position command's angle slews at this (raysd: within [ptu] max_velocity_deg_s)
     double pan_start_deg = 0.0;  // commanded at activate, and the estimate's start
     double tilt_start_deg = 0.0;
 

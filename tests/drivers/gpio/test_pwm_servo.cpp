@@ -3,6 +3,7 @@
 // temporary directory laid out like /sys/class/pwm.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <numbers>
 #include <thread>
+#include <vector>
 
 #include "drivers/gpio/fake_pwm_channel.hpp"
 #include "drivers/gpio/pwm_servo.hpp"
@@ -51,10 +53,16 @@ struct ServoRig {
     std::unique_ptr<PwmServo> driver;
 };
 
+PwmSettings fast_moves() {
+    PwmSettings settings;
+    settings.move_speed_deg_s = 10000.0;  // a position command's angle at once
+    return settings;
+}
+
 }  // namespace
 
 TEST_CASE("pwm-servo: duty cycles follow the commanded angles, clamped to the range", "[pwm]") {
-    ServoRig rig;  // 1000–2000 µs over −90°..90°, 20 ms
+    ServoRig rig(fast_moves());  // 1000–2000 µs over −90°..90°, 20 ms
     CHECK(rig.pan.period_ns() == 20000000);
     CHECK(rig.pan.enabled());
     CHECK(rig.pan.duty_ns() == 1500000);  // start angle 0°
@@ -87,7 +95,7 @@ TEST_CASE("pwm-servo: velocity integrates, stop holds the estimated position, re
 }
 
 TEST_CASE("pwm-servo: stale commands hold, deactivate disables only when configured", "[pwm]") {
-    PwmSettings settings;
+    PwmSettings settings = fast_moves();
     settings.pan_speed_deg_s = 60.0;
     ServoRig rig(settings);
     rig.drive(both(CommandMode::Position, deg(80.0), 0.0), 0.05);  // takes 1.3 s at 60°/s
@@ -106,8 +114,36 @@ TEST_CASE("pwm-servo: stale commands hold, deactivate disables only when configu
     CHECK_FALSE(limp.tilt.enabled());
 }
 
+TEST_CASE("pwm-servo: a position move slews at the move speed, not at the servo's rated speed", "[pwm]") {
+    PwmSettings settings;  // rated 300°/s
+    settings.move_speed_deg_s = 45.0;
+    ServoRig rig(settings);
+    const auto duty_of = [](double angle_deg) { return 1500000 + angle_deg / 90.0 * 500000; };
+    rig.drive(both(CommandMode::Position, deg(40.0), 0.0), 0.5);
+    const double halfway = static_cast<double>(rig.pan.duty_ns());
+    CHECK(halfway > duty_of(15.0));  // 22.5° after 0.5 s at 45°/s
+    CHECK(halfway < duty_of(30.0));  // at once at the rated speed
+    rig.drive(both(CommandMode::Position, deg(40.0), 0.0), 0.7);
+    CHECK(rig.pan.duty_ns() == std::lround(duty_of(40.0)));
+    CHECK(rig.tilt.duty_ns() == std::lround(duty_of(0.0)));
+    // No stretch of 0.1 s or more in the duty cycles written is faster than the move speed.
+    std::vector<PwmWrite> duties;
+    for (const PwmWrite& write : rig.pan.writes())
+        if (write.file == PwmWrite::File::Duty) duties.push_back(write);
+    REQUIRE(duties.size() > 20);
+    double fastest_deg_s = 0.0;
+    for (std::size_t i = 0, j = 0; j < duties.size(); ++j) {
+        while (i + 1 < j && std::chrono::duration<double>(duties[j].time - duties[i + 1].time).count() >= 0.1) ++i;
+        const double span_s = std::chrono::duration<double>(duties[j].time - duties[i].time).count();
+        if (span_s >= 0.1)
+            fastest_deg_s = std::max(fastest_deg_s, static_cast<double>(std::abs(duties[j].value - duties[i].value)) / 500000.0 * 90.0 / span_s);
+    }
+    CHECK(fastest_deg_s > 30.0);
+    CHECK(fastest_deg_s < 45.0 * 1.15);  // one write's step over 0.1 s
+}
+
 TEST_CASE("pwm-servo: a failed write faults, holds the other axis and recovers after reopening", "[pwm]") {
-    ServoRig rig;
+    ServoRig rig(fast_moves());
     rig.drive(both(CommandMode::Position, deg(10.0), deg(10.0)), 0.05);
     rig.pan.set_failing(true);
     rig.drive(both(CommandMode::Position, deg(20.0), deg(20.0)), 0.05);

@@ -130,10 +130,19 @@ AxisCommand PtuLimiter::shape(std::size_t axis, const AxisCommand& wanted, TimeP
         return {CommandMode::Velocity, shape_velocity(axis, std::isfinite(wanted.value) ? wanted.value : 0.0, predicted, now)};
     if (track.mode == CommandMode::Velocity && track.velocity != 0.0)
         return {CommandMode::Velocity, shape_velocity(axis, 0.0, predicted, now)};  // ramp down before the position move
+    // The target clamped into the soft angles, approached at most at max_velocity: what is passed on
+    // advances from the last target sent (from the predicted position when the axis was not on a
+    // position move) by at most max_velocity·dt. However fast the drive's own profile, the move keeps
+    // to the limits in force now.
     const AxisLimits& limits = limits_.axes[axis];
+    const double target = std::clamp(wanted.value, limits.min_rad, limits.max_rad);
+    const double from = track.mode == CommandMode::Position ? track.position : predicted.position();
+    const double step = limits.max_velocity_rad_s * std::clamp(Seconds(now - track.last_sent).count(), 0.0, limits_.command_interval_s);
+    // Within the soft angles even from an axis beyond them (limits moved in on it).
+    track.position = std::clamp(std::clamp(target, from - step, from + step), limits.min_rad, limits.max_rad);
     track.mode = CommandMode::Position;
     track.last_sent = now;
-    return {CommandMode::Position, std::clamp(wanted.value, limits.min_rad, limits.max_rad)};
+    return {CommandMode::Position, track.position};
 }
 
 double PtuLimiter::shape_velocity(std::size_t axis, double wanted, const AxisDynamics& predicted, TimePoint now) {

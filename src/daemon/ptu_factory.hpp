@@ -12,9 +12,9 @@
 namespace rays::daemon {
 
 // The configuration with each drive's own position-move profile (speed, acceleration, homing speed)
-// held within the soft limits of [ptu]. PtuLimiter shapes velocity commands but leaves a position move
-// (search, home, park, goto) to the drive's profile, so a profile faster than the soft limit would
-// outrun it. make_ptu_driver builds from this.
+// held within the soft limits of [ptu] as configured at start. PtuLimiter advances a position move's
+// target (search, home, park, goto) at most at the soft velocity, but the drive's profile moves to
+// each target: its acceleration, and its speed between targets. make_ptu_driver builds from this.
 DaemonConfig with_moves_within_soft_limits(DaemonConfig config);
 
 // Null with `error` when the section's settings cannot work together.

@@ -8,7 +8,7 @@
 #include <limits>
 #include <random>
 #include <string>
-#include <string>
+#include <vector>
 
 #include "limiter_rig.hpp"
 
@@ -163,7 +163,7 @@ TEST_CASE("PtuLimiter lets an axis beyond a soft limit move back but not further
     PtuLimits limits = symmetric_limits(-1.0, 1.0, 1.0, 4.0);
     LimiterRig rig(matched_mock(limits, 0.0), limits);
     PtuState state;
-    rig.limiter.write(both_axes(CommandMode::Position, 0.8, 0.0), at_seconds(0.0));
+    for (int frame = 0; frame <= 150; ++frame) rig.limiter.write(both_axes(CommandMode::Position, 0.8, 0.0), at_seconds(0.02 * frame));
     rig.limiter.read(state, at_seconds(3.0));
     REQUIRE(state.axes[0].position_rad == Approx(0.8));
     limits.axes[0].max_rad = 0.5;  // the axis is now beyond its limit
@@ -199,7 +199,7 @@ TEST_CASE("PtuLimiter turns non-finite commands into a ramp to rest", "[limiter]
     CHECK(state.axes[1].velocity_rad_s == 0.0);
 }
 
-TEST_CASE("PtuLimiter clamps position targets and ramps velocity down before a position move", "[limiter]") {
+TEST_CASE("PtuLimiter clamps position targets, approaches them at max_velocity, and ramps velocity down first", "[limiter]") {
     const PtuLimits limits = symmetric_limits(-1.0, 1.0, 1.0, 5.0);
     LimiterRig rig(matched_mock(limits, 0.0), limits);
     constexpr double kFrame = 0.02;
@@ -217,13 +217,60 @@ TEST_CASE("PtuLimiter clamps position targets and ramps velocity down before a p
         CHECK(records[r].command.axes[0].value == Approx(std::min(0.0, -0.5 + 0.1 * static_cast<double>(r - 24))).margin(1e-12));
     }
     CHECK(records[first_position - 1].command.axes[0].value == 0.0);  // exactly at rest before the move
-    CHECK(records[first_position].command.axes[0].value == 1.0);     // clamped
     CHECK(records[25].command.axes[1].mode == CommandMode::Position);  // tilt was at rest: no ramp
-    CHECK(records[25].command.axes[1].value == -1.0);
+    // The targets passed on advance toward the clamped ones at 1 rad/s (0.02 rad a frame).
+    CHECK(records[first_position].command.axes[0].value < -0.2);  // a step from where the axis stands (about -0.28)
+    CHECK(records[25].command.axes[1].value == Approx(-0.02).margin(1e-9));
     PtuState state;
+    for (; frame < 200; ++frame) {  // reading too, as the frame loop does: the limiter predicts from the reports
+        rig.limiter.write(both_axes(CommandMode::Position, 5.0, -3.0), at_seconds(kFrame * frame));
+        rig.limiter.read(state, at_seconds(kFrame * frame));
+    }
+    const auto all = rig.mock.records();
+    for (std::size_t r = first_position + 1; r < all.size(); ++r) {
+        INFO("record " << r);
+        CHECK(all[r].command.axes[0].value - all[r - 1].command.axes[0].value <= 0.02 + 1e-9);
+        CHECK(all[r].command.axes[0].value <= 1.0);  // clamped
+        CHECK(all[r].command.axes[1].value >= -1.0);
+    }
+    CHECK(all.back().command.axes[0].value == 1.0);
+    CHECK(all.back().command.axes[1].value == -1.0);
     rig.limiter.read(state, at_seconds(10.0));
     CHECK(state.axes[0].position_rad == Approx(1.0).margin(1e-12));
     CHECK(state.axes[1].position_rad == Approx(-1.0).margin(1e-12));
+}
+
+TEST_CASE("PtuLimiter keeps a faster unit's position move to max_velocity, and to a limit lowered during it", "[limiter]") {
+    PtuLimits limits = symmetric_limits(-3.0, 3.0, 1.0, 5.0);
+    MockPtuConfig drive = matched_mock(limits, 0.0);
+    drive.max_velocity_rad_s = 3.0;  // its own position moves would go at 3 rad/s
+    LimiterRig rig(drive, limits);
+    constexpr double kFrame = 0.02;
+    PtuState state;
+    double arrived_at = -1.0;
+    std::vector<double> positions;
+    for (int frame = 0; frame < 400 && arrived_at < 0.0; ++frame) {
+        const double t = kFrame * frame;
+        if (frame == 50) {  // at 1 s, about 1 rad along: a reload halves the limit
+            limits.axes[0].max_velocity_rad_s = 0.5;
+            rig.limiter.set_limits(limits);
+        }
+        rig.limiter.write(both_axes(CommandMode::Position, 2.5, 0.0), at_seconds(t));
+        rig.limiter.read(state, at_seconds(t + kFrame));
+        positions.push_back(state.axes[0].position_rad);
+        if (std::abs(state.axes[0].position_rad - 2.5) < 1e-6) arrived_at = t + kFrame;
+    }
+    // 1 rad at 1 rad/s, then 1.5 rad at 0.5 rad/s: 4 s (the unit alone: under 1 s).
+    CHECK(arrived_at > 4.0);
+    CHECK(arrived_at < 4.3);
+    // Over every half second before the change, and from 1 s after it (the unit first closes the
+    // 0.1 rad it lagged behind the targets at 1 rad/s).
+    for (std::size_t k = 25; k < positions.size(); ++k) {
+        if (k > 50 && k < 125) continue;
+        const double speed = (positions[k] - positions[k - 25]) / (25 * kFrame);
+        INFO("frame " << k);
+        CHECK(speed <= (k <= 50 ? 1.0 : 0.5) * 1.02);  // chasing each target with its own profile, about 1 % over
+    }
 }
 
 TEST_CASE("PtuLimiter holds an axis still until the unit reports it ready, and after a fault", "[limiter]") {

@@ -6,11 +6,11 @@
 // max_velocity: each write passes on a target that advances from the last one sent (from the
 // predicted position when the axis was not on a position move) by at most max_velocity·dt (dt = time
 // since the last command, at most command_interval_s), and within [min_rad, max_rad] (at once from an
-// axis beyond them). The drive's own profile moves to each, so a
-// move keeps to the velocity limit in force now however fast that profile (and a reload that lowers
-// the limit slows the next write's move); the move's acceleration is the profile's, so configure it
-// within max_accel. A move therefore needs write() every frame until it arrives, as the frame loop
-// does; a write stream that stops leaves the axis at the last target sent.
+// axis beyond them). The drive's own profile moves to each, so a move keeps to the velocity limit in
+// force now however fast that profile (and a reload that lowers the limit slows the next write's
+// move); the move's acceleration is the profile's, so configure it within max_accel. A move
+// therefore needs write() every frame until it arrives, as the frame loop does; a write stream that
+// stops leaves the axis at the last target sent.
 // Velocity commands, in this order: non-finite → 0; slew-limited to ±max_accel·dt around the last
 // command (dt = time since it, at most command_interval_s); clamped to ±max_velocity; then reduced
 // so the axis can still stop before the soft limit it moves toward even if this command is held for

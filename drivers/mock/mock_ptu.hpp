@@ -31,8 +31,8 @@ struct MockPtuConfig {
     double max_velocity_rad_s = 2.0;
     double max_accel_rad_s2 = 12.0;
     double latency_s = 0.01;  // from write() to effect
-    // Position moves cruise at most at this: the drive's profile velocity, which PtuLimiter leaves to
-    // the drive (ptu_limiter.hpp) and its integrator sets within the soft limits.
+    // Position moves cruise at most at this: the drive's profile velocity, with which it follows
+    // PtuLimiter's position targets (ptu_limiter.hpp), set within the soft limits.
     double profile_velocity_rad_s = std::numeric_limits<double>::infinity();
     // Pan ±175°, tilt −35° to 95°: just beyond the daemon's default soft limits.
     std::array<EndStops, kAxes> end_stops{{{-3.0543, 3.0543}, {-0.6109, 1.6581}}};

@@ -34,7 +34,7 @@ void add_mechanics(ParamTable<S>& table) {
         .add("max_velocity_deg_s", &S::max_velocity_deg_s, "deg/s", 0.01, 10000,
              "fastest axis speed of the step generator (keep ptu.max_velocity_deg_s within it); raysd uses at most ptu.max_velocity_deg_s")
         .add("max_accel_deg_s2", &S::max_accel_deg_s2, "deg/s^2", 0.01, 1000000,
-             "acceleration of the step generator's ramps (keep ptu.max_accel_deg_s2 within it); raysd uses at most ptu.max_accel_deg_s2")
+             "acceleration of the step generator's ramps (keep ptu.max_accel_deg_s2 within it)")
         .add("max_step_rate_hz", &S::max_step_rate_hz, "Hz", 1, kMaxStepRateHz,
              "highest step rate per axis; max_velocity_deg_s must fit under it")
         .add("pulse_width_us", &S::pulse_width_us, "us", 1, 1000, "shortest STEP high (and low) time")

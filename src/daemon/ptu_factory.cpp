@@ -33,13 +33,9 @@ void hold_within(double& value, double limit) { value = std::min(value, limit); 
 
 DaemonConfig with_moves_within_soft_limits(DaemonConfig config) {
     const double velocity = config.ptu.motion.max_velocity_deg_s;
-    const double accel = config.ptu.motion.max_accel_deg_s2;
     hold_within(config.canopen.max_velocity_deg_s, velocity);  // 0x607F, 0x6081
-    hold_within(config.canopen.accel_deg_s2, accel);           // 0x6083, 0x6084
     hold_within(config.odrive.max_velocity_deg_s, velocity);   // Set_Traj_Vel_Limit
-    hold_within(config.odrive.accel_deg_s2, accel);            // Set_Traj_Accel_Limits
     hold_within(config.gpio.max_velocity_deg_s, velocity);     // the pulse thread's profile
-    hold_within(config.gpio.max_accel_deg_s2, accel);
     hold_within(config.gpio.homing_speed_deg_s, velocity);
     hold_within(config.pwm.move_speed_deg_s, velocity);        // the commanded angle's slew
     return config;

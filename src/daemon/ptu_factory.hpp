@@ -11,10 +11,11 @@
 
 namespace rays::daemon {
 
-// The configuration with each drive's own position-move profile (speed, acceleration, homing speed)
-// held within the soft limits of [ptu] as configured at start. PtuLimiter advances a position move's
-// target (search, home, park, goto) at most at the soft velocity, but the drive's profile moves to
-// each target: its acceleration, and its speed between targets. make_ptu_driver builds from this.
+// The configuration with each drive's own position-move speed (profile velocity, homing speed) held
+// within [ptu] max_velocity_deg_s as configured at start. PtuLimiter advances a position move's target
+// (search, home, park, goto) at most at the soft velocity, but the drive's profile moves to each
+// target, at its own speed between them. Accelerations stay as configured: a drive's deceleration
+// also stops it. make_ptu_driver builds from this.
 DaemonConfig with_moves_within_soft_limits(DaemonConfig config);
 
 // Null with `error` when the section's settings cannot work together.

@@ -12,7 +12,7 @@
 using namespace rays;
 using namespace rays::daemon;
 
-TEST_CASE("ptu factory: every drive's position moves are held within the soft velocity and acceleration limits") {
+TEST_CASE("ptu factory: every drive's position moves are held within the soft velocity limit") {
     DaemonConfig config;
     config.ptu.motion.max_velocity_deg_s = 40.0;
     config.ptu.motion.max_accel_deg_s2 = 200.0;
@@ -20,20 +20,19 @@ TEST_CASE("ptu factory: every drive's position moves are held within the soft ve
     config.canopen.interface = "can1";
     const DaemonConfig held = with_moves_within_soft_limits(config);
     CHECK(held.canopen.max_velocity_deg_s == 40.0);  // from 120
-    CHECK(held.canopen.accel_deg_s2 == 200.0);       // from 600
     CHECK(held.odrive.max_velocity_deg_s == 40.0);
-    CHECK(held.odrive.accel_deg_s2 == 200.0);
     CHECK(held.gpio.max_velocity_deg_s == 40.0);  // from 90
-    CHECK(held.gpio.max_accel_deg_s2 == 200.0);   // from 360
     CHECK(held.gpio.homing_speed_deg_s == 40.0);
+    // Accelerations as configured: a drive's deceleration also stops it.
+    CHECK(held.canopen.accel_deg_s2 == 600.0);
+    CHECK(held.odrive.accel_deg_s2 == 600.0);
+    CHECK(held.gpio.max_accel_deg_s2 == 360.0);
     CHECK(held.pwm.move_speed_deg_s == 40.0);
     CHECK(held.canopen.interface == "can1");  // the rest as given
 
     // A drive set slower than the soft limit keeps its own profile.
     config.canopen.max_velocity_deg_s = 20.0;
-    config.odrive.accel_deg_s2 = 100.0;
     CHECK(with_moves_within_soft_limits(config).canopen.max_velocity_deg_s == 20.0);
-    CHECK(with_moves_within_soft_limits(config).odrive.accel_deg_s2 == 100.0);
 }
 
 TEST_CASE("ptu factory: a CiA 402 drive configured from the defaults goes to a position at the soft velocity limit") {

@@ -33,8 +33,7 @@ config::ParamTable<CanopenSettings> build() {
              "drive position units per turn of the tilt axis")
         .add("max_velocity_deg_s", &S::max_velocity_deg_s, "deg/s", 0.1, 10000,
              "drives' max profile velocity (0x607F) and profile position speed (0x6081); raysd writes at most [ptu] max_velocity_deg_s")
-        .add("accel_deg_s2", &S::accel_deg_s2, "deg/s^2", 0.1, 1000000,
-             "drives' profile acceleration and deceleration; raysd writes at most [ptu] max_accel_deg_s2")
+        .add("accel_deg_s2", &S::accel_deg_s2, "deg/s^2", 0.1, 1000000, "drives' profile acceleration and deceleration")
         .add("quick_stop_decel_deg_s2", &S::quick_stop_decel_deg_s2, "deg/s^2", 0.1, 1000000,
              "drives' quick stop deceleration (0x6085), also used on communication loss")
         .add("absolute_encoders", &S::absolute_encoders, "drive positions are absolute: axes count as homed");

@@ -26,7 +26,7 @@ config::ParamTable<OdriveSettings> build() {
         .add("max_velocity_deg_s", &S::max_velocity_deg_s, "deg/s", 0.1, 10000,
              "trajectory velocity limit of position moves (Set_Traj_Vel_Limit); raysd sends at most [ptu] max_velocity_deg_s")
         .add("accel_deg_s2", &S::accel_deg_s2, "deg/s^2", 0.1, 1000000,
-             "trajectory acceleration and deceleration (Set_Traj_Accel_Limits); raysd sends at most [ptu] max_accel_deg_s2")
+             "trajectory acceleration and deceleration (Set_Traj_Accel_Limits)")
         .add("absolute_encoders", &S::absolute_encoders, "axis positions are absolute: axes count as homed");
     return table;
 }

@@ -3,8 +3,8 @@
 // and a CiA 402 drive on the in-memory bus configured from them moving at the soft limit.
 #include <catch2/catch.hpp>
 
-#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "canopen_rig.hpp"
 #include "daemon/ptu_factory.hpp"
@@ -49,11 +49,8 @@ TEST_CASE("ptu factory: a CiA 402 drive configured from the defaults goes to a p
     REQUIRE(rig.driver != nullptr);
     REQUIRE(rig.driver->configure().ok);
     REQUIRE(rig.driver->activate().ok);
-    double fastest = 0.0;
-    REQUIRE(rig.run_until(test::positions(1.0, 0.0), [&] {
-        fastest = std::max(fastest, std::abs(rig.pan.velocity_rad_s()));
-        return std::abs(rig.pan.position_rad() - 1.0) < 1e-3;
-    }));
-    CHECK(fastest * 180.0 / M_PI == Approx(90.0).epsilon(0.01));
+    const std::optional<double> fastest = test::fastest_pan_move(rig, 1.0);
+    REQUIRE(fastest);
+    CHECK(*fastest * 180.0 / M_PI == Approx(90.0).epsilon(0.01));
     rig.driver->deactivate();
 }

@@ -2,9 +2,12 @@
 // A CANopen driver on an in-memory bus with two simulated CiA 402 drives (pan node 1, tilt node 2),
 // with short timings so that faults show within a fraction of a second.
 #pragma once
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -96,6 +99,18 @@ inline ptu::PtuCommand positions(double pan, double tilt) {
     command.axes[0] = {ptu::CommandMode::Position, pan};
     command.axes[1] = {ptu::CommandMode::Position, tilt};
     return command;
+}
+
+// Moves a rig's pan axis (a CanopenRig or an OdriveRig) to `pan` by position commands: the fastest the
+// simulated axis went on the way, rad/s; none when it did not arrive.
+template <typename Rig>
+std::optional<double> fastest_pan_move(Rig& rig, double pan) {
+    double fastest = 0.0;
+    const bool arrived = rig.run_until(positions(pan, 0.0), [&] {
+        fastest = std::max(fastest, std::abs(rig.pan.velocity_rad_s()));
+        return std::abs(rig.pan.position_rad() - pan) < 1e-3;
+    });
+    return arrived ? std::optional<double>(fastest) : std::nullopt;
 }
 
 // Frames the drive received with this COB-ID.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "canopen_rig.hpp"
 #include "drivers/can/canopen/canopen_settings.hpp"
@@ -131,12 +132,9 @@ TEST_CASE("canopen: a position move cruises at the drives' profile velocity (0x6
     settings.max_velocity_deg_s = 45.0;  // the simulated drives reach 3 rad/s (172 deg/s)
     CanopenRig rig(settings);
     bring_up(rig);
-    double fastest = 0.0;
-    REQUIRE(rig.run_until(positions(0.6, 0.0), [&] {
-        fastest = std::max(fastest, std::abs(rig.pan.velocity_rad_s()));
-        return std::abs(rig.pan.position_rad() - 0.6) < 1e-3;
-    }));
-    CHECK(fastest * 180.0 / M_PI == Approx(45.0).epsilon(0.01));
+    const std::optional<double> fastest = rays::test::fastest_pan_move(rig, 0.6);
+    REQUIRE(fastest);
+    CHECK(*fastest * 180.0 / M_PI == Approx(45.0).epsilon(0.01));
     rig.driver->deactivate();
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "canopen_rig.hpp"
 #include "odrive_rig.hpp"
@@ -85,12 +86,9 @@ TEST_CASE("odrive: a position move cruises at the trajectory velocity limit, not
     settings.max_velocity_deg_s = 45.0;  // the simulated axes reach 3 rad/s (172 deg/s)
     OdriveRig rig(settings);
     bring_up(rig);
-    double fastest = 0.0;
-    REQUIRE(rig.run_until(positions(0.6, 0.0), [&] {
-        fastest = std::max(fastest, std::abs(rig.pan.velocity_rad_s()));
-        return std::abs(rig.pan.position_rad() - 0.6) < 1e-3;
-    }));
-    CHECK(fastest * 180.0 / M_PI == Approx(45.0).epsilon(0.01));
+    const std::optional<double> fastest = rays::test::fastest_pan_move(rig, 0.6);
+    REQUIRE(fastest);
+    CHECK(*fastest * 180.0 / M_PI == Approx(45.0).epsilon(0.01));
     rig.driver->deactivate();
 }
 

@@ -137,7 +137,7 @@ AxisCommand PtuLimiter::shape(std::size_t axis, const AxisCommand& wanted, TimeP
     const AxisLimits& limits = limits_.axes[axis];
     const double target = std::clamp(wanted.value, limits.min_rad, limits.max_rad);
     const double from = track.mode == CommandMode::Position ? track.position : predicted.position();
-    const double step = limits.max_velocity_rad_s * std::clamp(Seconds(now - track.last_sent).count(), 0.0, limits_.command_interval_s);
+    const double step = limits.max_velocity_rad_s * since_last_command(axis, now);
     // Within the soft angles even from an axis beyond them (limits moved in on it).
     track.position = std::clamp(std::clamp(target, from - step, from + step), limits.min_rad, limits.max_rad);
     track.mode = CommandMode::Position;
@@ -145,12 +145,16 @@ AxisCommand PtuLimiter::shape(std::size_t axis, const AxisCommand& wanted, TimeP
     return {CommandMode::Position, track.position};
 }
 
+double PtuLimiter::since_last_command(std::size_t axis, TimePoint now) const {
+    return std::clamp(Seconds(now - tracks_[axis].last_sent).count(), 0.0, limits_.command_interval_s);
+}
+
 double PtuLimiter::shape_velocity(std::size_t axis, double wanted, const AxisDynamics& predicted, TimePoint now) {
     AxisTrack& track = tracks_[axis];
     const AxisLimits& limits = limits_.axes[axis];
     const double hold_s = limits_.command_interval_s;
     const double accel = limits.max_accel_rad_s2;
-    const double step = accel * std::clamp(Seconds(now - track.last_sent).count(), 0.0, hold_s);
+    const double step = accel * since_last_command(axis, now);
     const double from = track.mode == CommandMode::Velocity ? track.velocity : predicted.velocity();
     double velocity = std::clamp(wanted, from - step, from + step);
     velocity = std::clamp(velocity, -limits.max_velocity_rad_s, limits.max_velocity_rad_s);

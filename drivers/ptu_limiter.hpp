@@ -118,6 +118,8 @@ private:
     AxisDynamics predict(std::size_t axis, TimePoint until, TimePoint::duration latency) const;
     AxisCommand shape(std::size_t axis, const AxisCommand& wanted, TimePoint now, TimePoint::duration latency);
     double shape_velocity(std::size_t axis, double wanted, const AxisDynamics& predicted, TimePoint now);
+    // Seconds since the axis' last command, at most command_interval_s: what a rate limit allows for.
+    double since_last_command(std::size_t axis, TimePoint now) const;
     void remember(std::size_t axis, const AxisCommand& sent, TimePoint now, TimePoint::duration latency);
     void forget_all();
 

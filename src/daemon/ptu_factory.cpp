@@ -18,8 +18,8 @@ namespace {
 ptu::MockPtuConfig mock_ptu_config(const MockPtuSettings& mock, const PtuMotion& motion) {
     ptu::MockPtuConfig config;
     config.max_velocity_rad_s = mock.max_velocity_deg_s * kRadPerDeg;
-    // The simulated unit's position moves (search, home, park, goto) at the soft velocity limit, as
-    // the integrator of a real drive sets its profile velocity (PtuLimiter leaves position moves to it).
+    // The simulated unit follows PtuLimiter's position targets (search, home, park, goto) at the soft
+    // velocity limit, as with_moves_within_soft_limits sets a real drive's profile velocity.
     config.profile_velocity_rad_s = std::min(mock.max_velocity_deg_s, motion.max_velocity_deg_s) * kRadPerDeg;
     config.max_accel_rad_s2 = mock.max_accel_deg_s2 * kRadPerDeg;
     config.latency_s = mock.latency_ms / 1000.0;

@@ -615,9 +615,9 @@ TEST_CASE("closed loop: after release, the lost policy holds for the timeout, th
 }
 
 TEST_CASE("closed loop: going home on a unit faster than the soft limit keeps to the soft velocity limit") {
-    // PtuLimiter leaves a position move's speed to the drive's profile; the simulated unit's profile
-    // is set within the soft limit, as an integrator sets a real drive's. A stiff unit three times
-    // faster than the limit would otherwise go home at 120 deg/s.
+    // PtuLimiter advances a position move's target at the soft limit and the simulated unit's profile
+    // is set within it, as raysd sets a real drive's. A stiff unit three times faster than the limit
+    // went home at 120 deg/s before either.
     DaemonConfig config = lost_config("home");
     config.mock.max_velocity_deg_s = 3.0 * config.ptu.motion.max_velocity_deg_s;
     config.mock.max_accel_deg_s2 = 720;

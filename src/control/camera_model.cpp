@@ -60,4 +60,10 @@ double angle_difference(double a, double b) {
     return d <= -std::numbers::pi ? d + 2.0 * std::numbers::pi : d;
 }
 
+std::optional<Point> CameraModel::view_shift(double pan0_rad, double tilt0_rad, double pan1_rad, double tilt1_rad) const {
+    const std::optional<Point> p = pixel_of(world_angles({kCentre, kCentre}, pan0_rad, tilt0_rad), pan1_rad, tilt1_rad);
+    if (!p) return std::nullopt;
+    return Point{p->x - kCentre, p->y - kCentre};
+}
+
 }  // namespace rays::control

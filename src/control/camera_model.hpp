@@ -41,6 +41,10 @@ public:
     WorldAngles world_angles(Point pixel, double pan_rad, double tilt_rad) const;
     // The pixel showing a world direction with the unit at (pan, tilt); nullopt when behind.
     std::optional<Point> pixel_of(WorldAngles target, double pan_rad, double tilt_rad) const;
+    // How far turning the unit from (pan0, tilt0) to (pan1, tilt1) moves the view, px: where the
+    // direction seen at the frame's centre before is seen after (this(x) = before(x − shift) near
+    // the centre; a turn about the lens shows no parallax). nullopt when it is then behind the camera.
+    std::optional<Point> view_shift(double pan0_rad, double tilt0_rad, double pan1_rad, double tilt1_rad) const;
 
 private:
     explicit CameraModel(const Intrinsics& k) : k_(k) {}

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <numeric>
 
+#include "core/gaussian_smoother.hpp"
+#include "core/view_motion.hpp"
 #include "sim_rig.hpp"
 #include "support/emulator.hpp"
 
@@ -100,6 +102,39 @@ TEST_CASE("panning the unit right by θ moves the target left by fx·tan θ, til
     camera.render(0.0, 20 * kRadPerDeg, 6 * kRadPerDeg, *view);
     CHECK(view->truth.centre_px.y == Approx(kCentre + fy * std::tan(6 * kRadPerDeg)).margin(1e-9));
     CHECK(view->truth.mask_centroid_px.y == Approx(view->truth.centre_px.y).margin(0.3));
+}
+
+TEST_CASE("turning the unit moves the whole view by CameraModel::view_shift, as the view's bands measure it") {
+    // The world only (the walker far off): what ViewMotion measures between two views rendered at
+    // the same time (the same noise) is the turn's shift alone.
+    const auto camera = named_camera("patrol");
+    REQUIRE(camera);
+    auto a = std::make_unique<SimView>(), b = std::make_unique<SimView>();
+    const double pan0 = 2.5, tilt0 = -0.05;
+    for (const auto& [dpan_deg, dtilt_deg] : {std::pair{0.5, 0.0}, {-1.0, 0.4}, {1.5, -0.8}, {0.0, 1.2}}) {
+        INFO("turned by " << dpan_deg << "°, " << dtilt_deg << "°");
+        const double pan1 = pan0 + dpan_deg * kRadPerDeg, tilt1 = tilt0 + dtilt_deg * kRadPerDeg;
+        camera->render(3.0, pan0, tilt0, *a);
+        camera->render(3.0, pan1, tilt1, *b);
+        REQUIRE_FALSE(a->truth.in_view);
+        const std::optional<Point> told = camera->camera().view_shift(pan0, tilt0, pan1, tilt1);
+        REQUIRE(told);
+        // Panning right brings the world in from the right: it moves left; about fx·tan θ.
+        CHECK(told->x == Approx(-camera->camera().intrinsics().fx * std::tan(dpan_deg * kRadPerDeg)).margin(0.1));
+        auto smooth = std::make_unique<FloatImage>();
+        GaussianSmoother smoother;
+        smoother.set_sigma(1.0);
+        ViewMotion motion;
+        smoother.smooth(a->image, *smooth);
+        motion.take(*smooth);
+        smoother.smooth(b->image, *smooth);
+        motion.take(*smooth);
+        const ViewShift& measured = motion.since_previous();
+        INFO("told " << told->x << ", " << told->y << "; measured " << measured.shift.x << ", " << measured.shift.y);
+        REQUIRE(measured.known);
+        CHECK(measured.shift.x == Approx(told->x).margin(0.3));
+        CHECK(measured.shift.y == Approx(told->y).margin(0.3));
+    }
 }
 
 TEST_CASE("a target behind the camera or outside the field of view is not in view and has no mask") {

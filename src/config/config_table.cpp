@@ -43,8 +43,8 @@ void add_rays(ParamTable<TrackerConfig>& table) {
         .add("foreground_weight", &RaysTunables::foreground_weight, "", 0, 10, "weight of the still camera's foreground: edges where a ray leaves it cost less (0: no background is kept)")
         .add("appearance_weight", &RaysTunables::appearance_weight, "", 0, 10, "weight of the target's colours (colour sources): a rim away from where a ray's colours turn from target to background costs more (0: no colour model is kept)")
         .add("motion_layers", &RaysTunables::motion_layers,
-             "with colours, while the view moves: what moves with the target, not with the view, counts as the target "
-             "beside its colours (false: colours alone)")
+             "while the view moves, where things move with the target or with the view: with colours, both, beside "
+             "them; on grey, while the unit turns, the scene only (false: neither)")
         .add("temporal_weight", &RaysTunables::temporal_weight, "", 0, 10,
              "pull toward the previous frame's contour")
         .add("hypothesis_separation_px", &RaysTunables::hypothesis_separation_px, "px", 0, 64,

@@ -24,6 +24,10 @@ struct LikelihoodMap {
     static constexpr int kSize = kChromaSize;
     static constexpr float kMaxLogOdds = 3.0f;  // P = 0.95
     std::array<float, kChromaPixels> log_odds{};
+    // Whether a ray's split may stand as a rim where no edge is near it (the colours'); false where
+    // the map only says where the scene is (a grey source's motion layers), which moves a ray's
+    // choice among its edges but makes no rim where grey shows none.
+    bool split_rims = true;
 
     float cell(int i, int j) const { return log_odds[static_cast<std::size_t>(j * kSize + i)]; }
     // Bilinear between cell centres at processing pixel (x, y); clamped at the border. Inline: the

@@ -4,6 +4,7 @@
 // Implementations size every buffer in their constructor and never allocate, block or throw in
 // process().
 #pragma once
+#include <optional>
 #include "core/box.hpp"
 #include "core/clock.hpp"
 #include "core/contour.hpp"
@@ -64,6 +65,10 @@ public:
     // tracker does not run the motion detector. The caller allows it only when the camera stood
     // still from the previous frame's capture to this one's.
     virtual void allow_detection(bool allowed) = 0;
+    // How far the unit's own turning moved the view from the previous frame's capture to this one's
+    // (px, this(x) = previous(x − shift)), from the unit's reported angles; none where the caller
+    // does not know (a recording). Used by the next process() only.
+    virtual void expect_view_shift(std::optional<Point> shift) = 0;
 
     // Processes one frame, with its colour where the source has some (chroma.present); refinement
     // stops before `deadline`.

@@ -202,4 +202,11 @@ void MotionLayers::add_to(LikelihoodMap& map, Point ahead) const {
     for (float& v : map.log_odds) v = std::clamp(v, -LikelihoodMap::kMaxLogOdds, LikelihoodMap::kMaxLogOdds);
 }
 
+void MotionLayers::add_background_to(LikelihoodMap& map, Point ahead) {
+    moved_.fill(0.0f);
+    add_moved(ahead, 1.0f, moved_);
+    for (std::size_t c = 0; c < kChromaPixels; ++c)
+        map.log_odds[c] = std::clamp(map.log_odds[c] + std::min(moved_[c], 0.0f), -LikelihoodMap::kMaxLogOdds, LikelihoodMap::kMaxLogOdds);
+}
+
 }  // namespace rays

@@ -37,6 +37,10 @@ public:
     // read for), to the log-odds in `map`, bounding the sum as the colours' are (naive Bayes: the
     // two cues taken as independent).
     void add_to(LikelihoodMap& map, Point ahead) const;
+    // The same, but only where the map calls a place background (its negative log-odds): for a
+    // source with no colours to tell the target's movers from others going its way, the layers say
+    // where the scene is, never where the target is.
+    void add_background_to(LikelihoodMap& map, Point ahead);
 
     Point target_shift() const { return shift_; }  // the last update's, px
 
@@ -68,6 +72,7 @@ private:
     LikelihoodMap map_;  // the log-odds as of the last update
     // This update's cells: now, and before moved each layer's way (then the residuals of the two).
     CellPlane here_{}, target_{}, view_{}, next_{};
+    CellPlane moved_{};  // add_background_to()'s map moved on
     std::array<bool, kChromaPixels> target_off_{}, view_off_{};
     Point shift_;
     int frames_ = 0;

@@ -152,12 +152,12 @@ int RayProfiler::shoot(const FloatImage& image, const FloatImage* foreground, co
             if (near < 0 || half_steps(j) < half_steps(candidates_[near])) near = ci;
         }
         split_ = split;
-        if (near < 0) {  // no edge there: the split's own sample, however weak its gradient
+        if (near < 0 && likelihood->split_rims) {  // no edge there: the split's own sample, however weak its gradient
             near = nc;
             candidates_[nc++] = std::clamp(split, first, n - 2);
             foreground_step_[candidates_[near]] = 0.0f;
         }
-        std::rotate(candidates_.begin(), candidates_.begin() + near, candidates_.begin() + near + 1);
+        if (near >= 0) std::rotate(candidates_.begin(), candidates_.begin() + near, candidates_.begin() + near + 1);
     }
     const int margin = static_cast<int>(std::ceil(kEdgeMarginPx / step_));
     const int band = std::max(1, static_cast<int>(std::lround(kOutsideBandPx / step_)));

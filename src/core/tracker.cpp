@@ -34,6 +34,7 @@ constexpr double kPsrRate = 0.1;        // weight of the newest frame in that me
 constexpr int kKnownFrames = 10;         // frames a detector's target is followed by its rim before the filter may stand for it
 constexpr double kFilterAgreement = 1.0; // of the target's radius: a contour whose centroid is further from
                                          // a confident filter match has left the target
+constexpr double kViewAgreePx = 1.0;     // a view's measured shift within this of the unit's turning is the view's
 
 }  // namespace
 
@@ -98,20 +99,29 @@ bool Tracker::learn_colours(float rate) {
     return tunables_.rays.appearance_weight > 0.0 && appearance_.learn(*frame_, *chroma_, contour_, rate);
 }
 
-void Tracker::look_with_colours() {
+void Tracker::look_with_likelihood(Point ahead) {
     const bool colours = tunables_.rays.appearance_weight > 0.0 && chroma_->present && appearance_.valid();
+    const bool layers = layers_read() && result_.state == TrackState::Tracking;
+    likelihood_.split_rims = colours;
     if (colours) {
         appearance_.likelihood(*frame_, *chroma_, likelihood_);
         // While the view moves, what moves with the target is the target too, whatever its colours
         // (motion_layers.hpp). On a still view the learned background tells movers from the scene,
         // and the layers would claim every other mover going the target's way (a crowd).
-        if (layers_read() && result_.state == TrackState::Tracking) layers_.add_to(likelihood_, velocity_);
+        if (layers) layers_.add_to(likelihood_, ahead);
+    } else if (layers) {
+        // Grey: no colours tell the target from the other movers going its way (a crowd, a walker's
+        // swinging legs), so the layers say only where the scene is. That is what cuts a contour
+        // off a building it took in beside the walker the unit follows.
+        likelihood_.log_odds.fill(0.0f);
+        layers_.add_background_to(likelihood_, ahead);
     }
-    rays_.use_likelihood(colours ? &likelihood_ : nullptr);
+    rays_.use_likelihood(colours || layers ? &likelihood_ : nullptr);
 }
 
 bool Tracker::layers_on() const {
-    return tunables_.rays.motion_layers && tunables_.rays.appearance_weight > 0.0 && chroma_->present;
+    return tunables_.rays.motion_layers && tunables_.rays.appearance_weight > 0.0 &&
+           (chroma_->present || expected_view_.has_value());
 }
 
 bool Tracker::layers_read() const { return layers_on() && view_moved_ && layers_.valid(); }
@@ -120,14 +130,21 @@ void Tracker::learn_motion(Point last) {
     view_moved_ = false;
     if (!layers_on()) return;  // the view's shift is not worked out for nothing (it is, lazily, where read)
     const ViewShift& view = view_motion_.since_previous();
-    view_moved_ = view.known && !view.still;
-    if (has_previous_smoothed_ && view.known)
+    // A grey source's layers take the view's measured shift only where the unit's own turning
+    // accounts for it: a big mover can carry ViewMotion's bands with it in a still view, and a fast
+    // turn moves the view beyond what they measure (colours outweigh such a frame's evidence; grey
+    // has nothing else).
+    const bool trusted = chroma_->present ||
+                         (expected_view_ && std::abs(view.shift.x - expected_view_->x) <= kViewAgreePx &&
+                          std::abs(view.shift.y - expected_view_->y) <= kViewAgreePx);
+    view_moved_ = view.known && !view.still && trusted;
+    if (has_previous_smoothed_ && view.known && trusted)
         layers_.update(smoothed_, previous_smoothed_, contour_, {contour_.centroid.x - last.x, contour_.centroid.y - last.y},
                        view.shift);
 }
 
 void Tracker::use_seeded_colours(bool seeded) {
-    if (seeded) look_with_colours();
+    if (seeded) look_with_likelihood();
     else forget_colours();
 }
 
@@ -295,7 +312,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     if (!alike) {  // not the target: as if it had not been tried
         model_ = kept;
         appearance_ = kept_colours;
-        look_with_colours();
+        look_with_likelihood();
         tracked_area_ = area;
         last_seen_ = seen;  // where the filter looks for it again
     }
@@ -321,7 +338,7 @@ bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
     }
     model_ = kept;  // not the target: its learned looks are still what the filter looks for
     appearance_ = kept_colours;
-    look_with_colours();
+    look_with_likelihood();
     person_start_ = true;
     return false;
 }
@@ -368,6 +385,10 @@ void Tracker::track(TimePoint deadline) {
             last_points_[i] = {last_points_[i].x + step.x - applied.x, last_points_[i].y + step.y - applied.y};
         applied = step;
         prior_.set_polygon(last_points_.data(), last_count_, last_open_.data());
+        // A grey source's layers (only where the scene is) are read where this try puts the target:
+        // the view can turn a few pixels a frame either way in a fast closed loop, which the
+        // smoothed velocity does not follow, and a map read off the target cuts into it.
+        if (!chroma_->present) look_with_likelihood(step);
         rays_.extract(smoothed_, predicted, prior_, true, model_, clock_, deadline, contour_);
         reason = check_contour(predicted, confident);
         // The jumps may have let part of the contour out onto clutter: the smooth contour instead.
@@ -524,7 +545,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     frame_ = &frame;
     chroma_ = &chroma;
     smoother_.smooth(frame, smoothed_);
-    look_with_colours();
+    look_with_likelihood();
     // The frame's mean grey, in eight running sums: one sum is a chain of 16384 dependent adds.
     std::array<float, 8> sums{};
     for (int i = 0; i < kFramePixels; i += 8)
@@ -610,6 +631,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     external_prediction_.reset();
     previous_ = frame;
     has_previous_smoothed_ = layers_on();  // only the layers read it
+    expected_view_.reset();
     if (has_previous_smoothed_) previous_smoothed_ = smoothed_;
     has_previous_ = true;
     return result_;

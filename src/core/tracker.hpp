@@ -40,6 +40,7 @@ public:
     void reinit() override;
     void predict_next(Point m) override { external_prediction_ = m; }
     void allow_detection(bool allowed) override;
+    void expect_view_shift(std::optional<Point> shift) override { expected_view_ = shift; }
 
     // Processes one frame; refinement stops before `deadline`. No allocation, no exceptions.
     using ContourTracker::process;
@@ -104,14 +105,18 @@ private:
     // Learns the target's colours from this frame's contour (at `rate`; the first contour replaces
     // them); false when the frame has no colour, the term is off or the contour is too small.
     bool learn_colours(float rate);
-    // The rays look with the learned colours on this frame (the likelihood map), or without when
-    // there are none.
-    void look_with_colours();
+    // The rays look with the learned colours on this frame (the likelihood map, with the motion
+    // layers while the view moves), with the layers' background alone on a grey source, or without
+    // when there is neither. The layers' map is moved on by `ahead`, the target's shift since the
+    // last frame (by default its smoothed velocity).
+    void look_with_likelihood() { look_with_likelihood(velocity_); }
+    void look_with_likelihood(Point ahead);
     // After a new target's first guess of its colours (AppearanceModel::seed or seed_box): looked
     // with at once where it was seeded, else none.
     void use_seeded_colours(bool seeded);
     void forget_colours();
-    // Whether the motion layers are kept: a colour source with both terms on.
+    // Whether the motion layers are kept: both terms on, and a colour source or a caller that says
+    // how the unit's turning moved the view.
     bool layers_on() const;
     // Whether the rays read them this frame: the view moved, and they have seen enough.
     bool layers_read() const;
@@ -164,6 +169,7 @@ private:
     bool reacquire_ = false;  // start_point_ is a re-acquisition of the last target
     std::optional<Point> external_prediction_;  // from predict_next(), for the next frame only
     bool detection_allowed_ = true;  // the caller's word: the camera was to hold still
+    std::optional<Point> expected_view_;  // the caller's word: the unit's turning moved the view this far
     GreyImage aligned_previous_;     // the previous frame moved as the view moved, for differencing
     int lost_frames_ = 0;
     int untracked_frames_ = 0;  // frames since the last one with a contour

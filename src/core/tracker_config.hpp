@@ -30,7 +30,7 @@ struct RaysTunables {
     double temporal_weight = 0.1;  // rays.temporal_weight: pull toward the previous frame's contour
     double foreground_weight = 2.0;  // rays.foreground_weight: edges out of the still camera's foreground (0: off)
     double appearance_weight = 1.0;  // rays.appearance_weight: rims where the target's colours end (0: off)
-    bool motion_layers = true;     // rays.motion_layers: with colours, while the view moves, where things move with the target
+    bool motion_layers = true;     // rays.motion_layers: while the view moves, where things move with the target or the view
     double hypothesis_separation_px = 2.0;  // rays.hypothesis_separation_px: minimum gap between hypotheses (eq. 15)
     int centroid_rays = 32;        // rays.centroid_rays: rays used while m converges (eq. 11)
     int centroid_iterations = 6;   // rays.centroid_iterations: cap on re-extractions

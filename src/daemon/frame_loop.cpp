@@ -186,6 +186,11 @@ void FrameLoop::track_frame(TimePoint now) {
                        std::abs(at_capture.tilt_rate) <= tunables_.control.still_rad_s && !commands_motion();
     tracker_->allow_detection(still && still_at_last_frame_);  // ego-motion: difference only still views
     still_at_last_frame_ = still;
+    // How far the unit's own turning moved the view since the last frame (the tracker's motion layers).
+    const auto camera = control::CameraModel::from_intrinsics(tunables_.control.intrinsics);
+    tracker_->expect_view_shift(last_capture_ ? camera.view_shift(last_capture_->pan, last_capture_->tilt, at_capture.pan, at_capture.tilt)
+                                              : std::nullopt);
+    last_capture_ = at_capture;
     const bool coasting = !telemetry_.has_contour && controller_->has_target();
     if (std::optional<Point> expected = controller_->expected_pixel(at_capture)) {
         if (coasting) tracker_->reacquire_at(*expected);  // look again where the target should be by now
@@ -229,7 +234,6 @@ void FrameLoop::track_frame(TimePoint now) {
         // contour that crept along with the unit's own motion can lead it far): back to where the
         // target was last seen.
         if (!result.off_target && coasted_out) {
-            const auto camera = control::CameraModel::from_intrinsics(tunables_.control.intrinsics);
             const control::WorldAngles seen =
                 camera.world_angles(last_seen_pixel_, last_seen_at_.pan, last_seen_at_.tilt);
             lost_policy_.lost_after_coasting(at_capture.t_s, seen.azimuth, seen.elevation);

@@ -76,6 +76,7 @@ private:
     int run_before_gap_ = 0;        // ... and in the run the current gap ended
     WholeArea target_area_{0.85, 0.05};  // the tracked target's running area while whole in view, px²
     bool still_at_last_frame_ = false;
+    std::optional<control::UnitPose> last_capture_;  // the unit at the last tracked frame's capture
     bool require_homing_;
     std::chrono::nanoseconds frame_timeout_;  // no frame for this long: the axes stop
     std::chrono::nanoseconds wait_;           // longest wait for a frame: the unit gets a write this often

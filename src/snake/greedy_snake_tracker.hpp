@@ -40,6 +40,7 @@ public:
     void reinit() override;
     void predict_next(Point m) override { external_prediction_ = m; }
     void allow_detection(bool allowed) override { detection_allowed_ = allowed; }
+    void expect_view_shift(std::optional<Point>) override {}  // the snake does not use it
 
     // Processes one frame (grey alone: `chroma` is not read); the greedy passes stop before
     // `deadline`. No allocation, no exceptions.

@@ -5,6 +5,7 @@
 
 #include "core/tracker.hpp"
 #include "support/camouflaged_target_scene.hpp"
+#include "support/panning_scene.hpp"
 #include "support/skip.hpp"
 #include "support/thread_allocation_counter.hpp"
 #include "support/tracker_allocation_run.hpp"
@@ -124,5 +125,33 @@ TEST_CASE("Tracker::process allocates nothing while the motion layers learn and 
     // wanders over the texture: test_motion_layers.cpp).
     CHECK(tracking == kFrames);
     CHECK(overlap > 0.8);
+#endif
+}
+
+TEST_CASE("Tracker::process allocates nothing while a grey source's motion layers learn and are read (the unit turning)",
+          "[no_allocation]") {
+#ifdef RAYS_SANITIZED
+    skip_under_asan();
+#else
+    // The scene of "Tracker on a grey source cuts off a block beside the target ...": the layers'
+    // background is what keeps the contour off the block sliding past.
+    rays::test::PanningScene run;
+    run.block = true;
+    run.turning = true;
+    run.tracker.start_at({64.0, 64.0});
+    long allocations = 0;
+    int tracking = 0;
+    double overlap = 0.0;  // while the block touches the target, frames 5 … 39
+    for (int i = 0; i < 40; ++i) {
+        {
+            CountingScope counting;
+            tracking += run.step({1.0 * i, 0.0}, {64.0, 64.0}) == rays::TrackState::Tracking;
+        }
+        allocations += counted_allocations();
+        if (i >= 5) overlap += run.contour_iou() / 35.0;
+    }
+    CHECK(allocations == 0);
+    CHECK(tracking == 40);
+    CHECK(overlap > 0.72);
 #endif
 }

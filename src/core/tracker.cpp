@@ -545,7 +545,9 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     frame_ = &frame;
     chroma_ = &chroma;
     smoother_.smooth(frame, smoothed_);
-    look_with_likelihood();
+    // A grey source's layers are read only in track(), where each try puts the target.
+    if (chroma.present) look_with_likelihood();
+    else rays_.use_likelihood(nullptr);
     // The frame's mean grey, in eight running sums: one sum is a chain of 16384 dependent adds.
     std::array<float, 8> sums{};
     for (int i = 0; i < kFramePixels; i += 8)

@@ -322,12 +322,12 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
 bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
     // A person's target, once lost, is looked for at its own size: a mover whose contour is much
     // bigger (the group that holds it, the background a pan sweeps past a runner) is not it.
-    const double lost = person_start_ ? std::max(tracked_area_, whole_area_.area()) : 0.0;
-    if (lost <= 0.0) return begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
+    const double bound = person_start_ ? reacquire_bound() : 0.0;
+    if (bound <= 0.0) return begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
     const TargetModel kept = model_;
     const AppearanceModel kept_colours = appearance_;
     const double start_grey = start_grey_;
-    if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, lost / kReacquireAreaRatio)) {
+    if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, bound)) {
         // A mover that looks as the person's target did at the start is that target found again: it
         // keeps the person's standing (the watch's exemption, this bound, the grey at the start).
         if (start_looks_.locate(smoothed_, *chroma_, contour_.centroid).psr >= kConfidentPsr) {
@@ -453,6 +453,8 @@ bool Tracker::looks_like_target() const {
     return std::abs(mean_inside_grey(contour_) - learned) <= kReacquireGreyTolerance * std::max<double>(model_.frame_mean, 1.0);
 }
 
+double Tracker::reacquire_bound() const { return std::max(tracked_area_, whole_area_.area()) / kReacquireAreaRatio; }
+
 bool Tracker::knows_target() const { return person_start_ || rim_frames_ >= kKnownFrames; }
 
 double Tracker::inside_grey_share() const { return mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0); }
@@ -467,13 +469,15 @@ bool Tracker::look_again(TimePoint deadline) {
     // First where it was last seen ...
     const FilterMatch near = filter_.locate(smoothed_, *chroma_, last_seen_);
     result_.match_psr = near.psr;
-    if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline)) return true;
+    if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline, reacquire_bound()))
+        return true;
     // ... then anywhere in the frame, where a match must be about as clear as the target's were.
     const FilterMatch found = search_frame();
     if (found.psr < std::max(kConfidentPsr, kRedetectShare * psr_tracked_)) return false;
     const FilterMatch match = filter_.locate(smoothed_, *chroma_, found.at);  // centred on it: learned from there
     result_.match_psr = match.psr;
-    return match.psr >= kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
+    return match.psr >= kConfidentPsr &&
+           begin_track(match.at, last_radius, StartFrom::Filter, true, deadline, reacquire_bound());
 }
 
 const GreyImage& Tracker::aligned_previous(Point shift) {
@@ -601,7 +605,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
             // A re-acquisition tries the learned looks, then (just after the loss) afresh.
             auto reacquire = [&](Point m) {
-                return begin_track(m, last_radius, StartFrom::Prediction, true, deadline) ||
+                return begin_track(m, last_radius, StartFrom::Prediction, true, deadline, reacquire_bound()) ||
                        (untracked_frames_ <= kFreshReacquireFrames && reacquire_afresh(m, last_radius, deadline));
             };
             found = reacquire_   ? reacquire(*start_point_)

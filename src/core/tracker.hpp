@@ -84,6 +84,9 @@ private:
     // Whether the filter knows the target: one a person pointed at, or one whose rim it has followed
     // for a while (a detector's start may be on clutter).
     bool knows_target() const;
+    // The largest contour that may be the lost target found again (as its learned looks or where it
+    // should be): a few times its size, not the block or group beside it.
+    double reacquire_bound() const;
     // Whether this frame's contour encloses about the grey a person's target had at its start: what
     // the learned looks cannot tell once they have drifted onto background with the contour.
     bool as_grey_as_at_start() const;

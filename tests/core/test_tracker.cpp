@@ -698,3 +698,39 @@ TEST_CASE("Tracker started by detection takes the next mover whatever its size",
                    std::hypot(run.tracker.contour().centroid.x - BigMover::big_x(i, BigMover::kBig), run.tracker.contour().centroid.y - 92.0) < 6.0;
     CHECK(took_big);
 }
+
+TEST_CASE("Tracker finds a lost target again only at about its own size", "[tracker]") {
+    // A dark disc (radius 6) walks right on a lightly textured plain; from frame kSwap it is gone and
+    // a still dark block as grey, 5 times its size, stands where it was. Looked for again where it
+    // should be (the frame loop's reacquire_at) and by its learned looks, the block is not it.
+    constexpr int kSwap = 20;
+    constexpr double kRadius = 6.0;
+    SteadyClock clock;
+    Tracker tracker{TrackerConfig{}, clock};
+    rays::GreyImage image;
+    auto disc_x = [](int index) { return 30.0 + 1.0 * index; };
+    auto step = [&](int index) {
+        for (int y = 0; y < rays::kFrameSize; ++y)
+            for (int x = 0; x < rays::kFrameSize; ++x) {
+                double grey = 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
+                const double cx = disc_x(std::min(index, kSwap)), dx = x - cx, dy = y - 64.0;
+                const bool disc = index < kSwap && std::hypot(dx, dy) <= kRadius;
+                const bool block = index >= kSwap && std::abs(dx) <= 14.0 && std::abs(dy) <= 16.0;
+                if (disc || block) grey = 60.0;
+                image.at(x, y) = static_cast<std::uint8_t>(grey);
+            }
+        return tracker.process(image, rays::TimePoint::max()).state;
+    };
+    step(0);
+    tracker.start_at({disc_x(0), 64.0});
+    for (int i = 1; i < kSwap; ++i) REQUIRE(step(i) == TrackState::Tracking);
+    const double target_area = tracker.contour().area;
+    REQUIRE(target_area > 80.0);
+    REQUIRE(target_area < 200.0);
+    for (int i = kSwap; i < kSwap + 15; ++i) {
+        if (tracker.state() != TrackState::Tracking) tracker.reacquire_at({disc_x(kSwap), 64.0});
+        step(i);
+        INFO("frame " << i << ": the block stands where the disc was; contour area " << tracker.contour().area);
+        CHECK_FALSE(tracker.result().has_contour);
+    }
+}

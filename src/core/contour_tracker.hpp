@@ -55,7 +55,9 @@ public:
     // tracker learned of its looks is kept, so something else at that point is not taken for it.
     virtual void reacquire_at(Point m) = 0;
     virtual void release() = 0;          // drop the target and detect again
-    virtual void reinit() = 0;           // release and restart the detector's threshold adaptation
+    // release, restart the detector's threshold adaptation, and forget that a person chose the target
+    // (its size no longer bounds what the detector takes)
+    virtual void reinit() = 0;
 
     // Where the target's reference point will be in the next frame, from a predictor that knows more
     // than the image (the camera's own motion, a Kalman filter on the target): used once, by the next

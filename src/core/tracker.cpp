@@ -62,6 +62,7 @@ bool Tracker::set_tunables(const TrackerTunables& tunables) {
 }
 
 void Tracker::start_at(Point m) {
+    person_chose_ = true;
     start_point_ = m;
     start_box_.reset();
     reacquire_ = false;
@@ -71,6 +72,7 @@ bool Tracker::start_in(const Box& box) {
     if (box_problem(box) != nullptr) return false;
     start_point_ = box.centre();
     start_box_ = box;
+    person_chose_ = true;
     reacquire_ = false;
     return true;
 }
@@ -92,6 +94,7 @@ void Tracker::release() {
 
 void Tracker::reinit() {
     release();
+    person_chose_ = false;
     detector_.reset(tunables_.detect);
 }
 
@@ -321,15 +324,18 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
 
 bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
     // A person's target, once lost, is looked for at its own size: a mover whose contour is much
-    // bigger (the group that holds it, the background a pan sweeps past a runner) is not it.
-    const double bound = person_start_ ? reacquire_bound() : 0.0;
+    // bigger (the group that holds it, the background a pan sweeps past a runner) is not it. That
+    // holds too once the detector has found again a mover that kept no person's standing: it was
+    // taken, at that size, for the person's target.
+    const double bound = person_chose_ ? reacquire_bound() : 0.0;
     if (bound <= 0.0) return begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
     const TargetModel kept = model_;
     const AppearanceModel kept_colours = appearance_;
     const double start_grey = start_grey_;
+    const bool person_start = person_start_;
     if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, bound)) {
         // A mover that looks as the person's target did at the start is that target found again: it
-        // keeps the person's standing (the watch's exemption, this bound, the grey at the start).
+        // keeps the person's standing (the watch's exemption, the grey at the start).
         if (start_looks_.locate(smoothed_, *chroma_, contour_.centroid).psr >= kConfidentPsr) {
             person_start_ = true;
             start_grey_ = start_grey;
@@ -339,7 +345,7 @@ bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
     model_ = kept;  // not the target: its learned looks are still what the filter looks for
     appearance_ = kept_colours;
     look_with_likelihood();
-    person_start_ = true;
+    person_start_ = person_start;
     return false;
 }
 

@@ -177,6 +177,9 @@ private:
     int lost_frames_ = 0;
     int untracked_frames_ = 0;  // frames since the last one with a contour
     bool person_start_ = false;  // a person said where the target is (start_at, start_in)
+    // A person chose the target (start_at, start_in) since the last reinit(): whoever found it last,
+    // the detector looks for it at its own size.
+    bool person_chose_ = false;
     double tracked_area_ = 0;   // area of the last contour accepted as the target
     WholeArea whole_area_;      // the target's size, for looking for it again after an occlusion
     double whole_grey_ = 0;     // its inside grey / the frame's mean grey while whole (running; 0: none yet)

@@ -618,6 +618,9 @@ struct BigMover {
     static constexpr double kRadius = 7.0, kBigRadius = 26.0;
     // The disc that came back is gone again from kGoneAgain, and the big mover, darker, comes only then.
     bool leaves_again = false;
+    // What comes back is a striped square about as big as A, unlike it, on a plain without texture
+    // (the same texture round both would make them look alike).
+    bool back_unlike = false;
     SteadyClock clock;
     Tracker tracker{TrackerConfig{}, clock};
     rays::GreyImage image;
@@ -629,12 +632,14 @@ struct BigMover {
         const int big_from = leaves_again ? kGoneAgain + 2 : kBig;
         for (int y = 0; y < rays::kFrameSize; ++y)
             for (int x = 0; x < rays::kFrameSize; ++x) {
-                double grey = 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
+                double grey = back_unlike ? 150.0 : 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
                 const bool a = index < kGone && std::hypot(x - (20.0 + 1.5 * index), y - 36.0) <= kRadius;
                 const bool big = index >= big_from && std::hypot(x - big_x(index, big_from), y - 92.0) <= kBigRadius;
                 const bool back = index >= kBack && (!leaves_again || index < kGoneAgain) &&
-                                  std::hypot(x - back_x(index), y - 64.0) <= kRadius;
+                                  (back_unlike ? std::abs(x - back_x(index)) <= 6.0 && std::abs(y - 64.0) <= 6.0
+                                               : std::hypot(x - back_x(index), y - 64.0) <= kRadius);
                 if (a || big || back) grey = big && leaves_again ? 30.0 : 60.0;
+                if (back && back_unlike && (y / 2) % 2 == 0) grey = 230.0;
                 image.at(x, y) = static_cast<std::uint8_t>(grey);
             }
         return tracker.process(image, rays::TimePoint::max()).state;
@@ -684,6 +689,40 @@ TEST_CASE("Tracker takes a mover that looks as the person's target did at the st
         run.step(i);
         CHECK_FALSE(run.tracker.result().has_contour);
     }
+}
+
+TEST_CASE("Tracker looks for a person's target at its own size after the detector found another as big", "[tracker]") {
+    // The disc found again is unlike the person's target, so the track is the detector's from then
+    // on; gone again, it too is looked for at the size the person's target had: the big mover is not it.
+    BigMover run;
+    run.leaves_again = true;
+    run.back_unlike = true;
+    run.step(0);
+    run.tracker.start_at({20.0, 36.0});
+    int i = 1;
+    for (; i < BigMover::kGoneAgain; ++i) run.step(i);
+    REQUIRE(run.tracker.state() == TrackState::Tracking);
+    const rays::Contour& c = run.tracker.contour();
+    REQUIRE(std::hypot(c.centroid.x - BigMover::back_x(i - 1), c.centroid.y - 64.0) < 4.0);
+    for (; i < BigMover::kGoneAgain + 20; ++i) {
+        INFO("frame " << i << ": only the big mover moves");
+        run.step(i);
+        CHECK_FALSE(run.tracker.result().has_contour);
+    }
+}
+
+TEST_CASE("Tracker after reinit takes the next mover whatever the size of the person's target", "[tracker]") {
+    BigMover run;
+    run.step(0);
+    run.tracker.start_at({20.0, 36.0});
+    int i = 1;
+    for (; i < BigMover::kGone; ++i) REQUIRE(run.step(i) == TrackState::Tracking);
+    run.tracker.reinit();
+    bool took_big = false;
+    for (; i < BigMover::kBack && !took_big; ++i)
+        took_big = run.step(i) == TrackState::Tracking &&
+                   std::hypot(run.tracker.contour().centroid.x - BigMover::big_x(i, BigMover::kBig), run.tracker.contour().centroid.y - 92.0) < 6.0;
+    CHECK(took_big);
 }
 
 TEST_CASE("Tracker started by detection takes the next mover whatever its size", "[tracker]") {

@@ -712,7 +712,7 @@ TEST_CASE("Tracker looks for a person's target at its own size after the detecto
 }
 
 TEST_CASE("Tracker after reinit takes the next mover whatever the size of the person's target", "[tracker]") {
-    BigMover run;
+    BigMover run;  // reinit is the user's "start over": the person's choice goes with it
     run.step(0);
     run.tracker.start_at({20.0, 36.0});
     int i = 1;
@@ -740,7 +740,7 @@ TEST_CASE("Tracker started by detection takes the next mover whatever its size",
 
 TEST_CASE("Tracker finds a lost target again only at about its own size", "[tracker]") {
     // A dark disc (radius 6) walks right on a lightly textured plain; from frame kSwap it is gone and
-    // a still dark block as grey, 5 times its size, stands where it was. Looked for again where it
+    // a still dark block as grey, about 8 times its size, stands where it was. Looked for again where it
     // should be (the frame loop's reacquire_at) and by its learned looks, the block is not it.
     constexpr int kSwap = 20;
     constexpr double kRadius = 6.0;

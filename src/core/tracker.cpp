@@ -257,6 +257,8 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         reason = attention_.check(contour_, contour_.centroid, limits);
     }
     if (reason == nullptr && from == StartFrom::Filter && !looks_like_target()) reason = "not as grey as the target";
+    // The same target found again is about its own size, not the block or group beside it.
+    if (same_target) max_area = reacquire_bound();
     if (reason == nullptr && max_area > 0.0 && contour_.area > max_area) reason = "much bigger than the target";
     if (reason != nullptr) return false;
     if (!same_target) {
@@ -475,15 +477,13 @@ bool Tracker::look_again(TimePoint deadline) {
     // First where it was last seen ...
     const FilterMatch near = filter_.locate(smoothed_, *chroma_, last_seen_);
     result_.match_psr = near.psr;
-    if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline, reacquire_bound()))
-        return true;
+    if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline)) return true;
     // ... then anywhere in the frame, where a match must be about as clear as the target's were.
     const FilterMatch found = search_frame();
     if (found.psr < std::max(kConfidentPsr, kRedetectShare * psr_tracked_)) return false;
     const FilterMatch match = filter_.locate(smoothed_, *chroma_, found.at);  // centred on it: learned from there
     result_.match_psr = match.psr;
-    return match.psr >= kConfidentPsr &&
-           begin_track(match.at, last_radius, StartFrom::Filter, true, deadline, reacquire_bound());
+    return match.psr >= kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
 }
 
 const GreyImage& Tracker::aligned_previous(Point shift) {
@@ -611,7 +611,7 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
             const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
             // A re-acquisition tries the learned looks, then (just after the loss) afresh.
             auto reacquire = [&](Point m) {
-                return begin_track(m, last_radius, StartFrom::Prediction, true, deadline, reacquire_bound()) ||
+                return begin_track(m, last_radius, StartFrom::Prediction, true, deadline) ||
                        (untracked_frames_ <= kFreshReacquireFrames && reacquire_afresh(m, last_radius, deadline));
             };
             found = reacquire_   ? reacquire(*start_point_)

@@ -59,8 +59,8 @@ private:
     // a prediction (reacquire_at) is where the lost target should be; the filter (look_again) found
     // the lost target's looks there.
     enum class StartFrom { Person, Detector, Prediction, Filter };
-    // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks;
-    // `max_area` (px², 0: any) the most the first contour may enclose.
+    // Starts a track at m; `same_target`: a re-acquisition, keeping the target's learned looks (its
+    // first contour at most reacquire_bound()); else `max_area` (px², 0: any) the most it may enclose.
     bool begin_track(Point m, double radius, StartFrom from, bool same_target, TimePoint deadline,
                      double max_area = 0.0);
     // Starts a track in a box: the box's ellipse the first contour's prior, its inside the target's looks.
@@ -84,8 +84,7 @@ private:
     // Whether the filter knows the target: one a person pointed at, or one whose rim it has followed
     // for a while (a detector's start may be on clutter).
     bool knows_target() const;
-    // The largest contour that may be the lost target found again (as its learned looks or where it
-    // should be): a few times its size, not the block or group beside it.
+    // The largest contour that may be the lost target found again: a few times its size.
     double reacquire_bound() const;
     // Whether this frame's contour encloses about the grey a person's target had at its start: what
     // the learned looks cannot tell once they have drifted onto background with the contour.

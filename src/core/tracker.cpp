@@ -296,6 +296,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     const WholeArea whole = whole_area_;
     const double whole_grey = whole_grey_;
     const Point seen = last_seen_;
+    const double bound = reacquire_bound();
     if (!kept.valid) return false;
     const bool found = begin_track(m, radius, StartFrom::Prediction, false, deadline);
     auto mean_inside = [](const TargetModel& model) {
@@ -309,8 +310,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     const double was = mean_inside(kept), now = mean_inside(model_);
     const bool grey_alike = std::abs(now - was) <= kReacquireGreyTolerance * frame ||
                             (whole_grey > 0.0 && std::abs(now / frame - whole_grey) <= kReacquireGreyTolerance);
-    const bool alike = found && grey_alike && contour_.area >= kReacquireAreaRatio * area &&
-                       contour_.area * kReacquireAreaRatio <= std::max(area, whole.area());
+    const bool alike = found && grey_alike && contour_.area >= kReacquireAreaRatio * area && contour_.area <= bound;
     whole_area_ = whole;  // the same target, if alike
     whole_grey_ = whole_grey;
     if (alike) learn_looks(kFilterRate, false);

@@ -360,7 +360,9 @@ FilterMatch CorrelationFilter::locate(const FloatImage& image, const Chroma& chr
     const double ov = offset(((pv + kN - 1) % kN) * kN + pu, ((pv + 1) % kN) * kN + pu);
     const double du = (pu < kHalf ? pu : pu - kN) + ou, dv = (pv < kHalf ? pv : pv - kN) + ov;
     const double step = window_px_ / kN;
-    return {{around.x + du * step, around.y + dv * step}, spread > 0.0 ? (top - mean) / spread : 0.0};
+    const Point at{around.x + du * step, around.y + dv * step};
+    const bool in_frame = at.x >= 0.0 && at.y >= 0.0 && at.x <= kFrameSize - 1 && at.y <= kFrameSize - 1;
+    return {at, in_frame && spread > 0.0 ? (top - mean) / spread : 0.0};
 }
 
 }  // namespace rays

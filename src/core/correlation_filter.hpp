@@ -47,7 +47,9 @@ public:
     // A target beyond a quarter of the window from its centre is learned from a window of its own.
     void learn_located(const FloatImage& image, const Chroma& chroma, Point centre, double target_px, float rate);
 
-    // The response over a window centred at `around`: where its peak is, and how sure.
+    // The response over a window centred at `around`: where its peak is, and how sure. A target
+    // whose centre is found off the frame is not found there (PSR 0): what the frame shows of it
+    // is not where it is, and a track cannot start from it.
     FilterMatch locate(const FloatImage& image, const Chroma& chroma, Point around);
 
 private:

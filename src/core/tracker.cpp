@@ -364,8 +364,6 @@ void Tracker::track(TimePoint deadline) {
     // The correlation filter, where it is sure, says where the target is, edges or not.
     const Point expected = external_prediction_ ? *external_prediction_ : Point{last.x + v.x, last.y + v.y};
     match_ = filter_.locate(smoothed_, *chroma_, expected);
-    if (match_.at.x < 0.0 || match_.at.y < 0.0 || match_.at.x > kFrameSize - 1 || match_.at.y > kFrameSize - 1)
-        match_.psr = 0.0;  // a target found off the frame is not found
     result_.match_psr = match_.psr;
     const bool confident = match_.psr >= kConfidentPsr;
     if (confident) v = {match_.at.x - last.x, match_.at.y - last.y};
@@ -508,8 +506,7 @@ FilterMatch Tracker::search_frame() {
         const int window = search_cursor_++ % (per_axis * per_axis);
         const Point centre{(window % per_axis + 0.5) * spacing, (window / per_axis + 0.5) * spacing};
         const FilterMatch m = filter_.locate(smoothed_, *chroma_, centre);
-        const bool in_frame = m.at.x >= 0.0 && m.at.y >= 0.0 && m.at.x <= kFrameSize - 1 && m.at.y <= kFrameSize - 1;
-        if (in_frame && m.psr > best.psr) best = m;
+        if (m.psr > best.psr) best = m;
     }
     search_cursor_ %= per_axis * per_axis;
     return best;

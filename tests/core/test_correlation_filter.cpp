@@ -154,3 +154,28 @@ TEST_CASE("The filter's window follows the target's size, within the frame", "[f
     filter.reset();
     CHECK_FALSE(filter.valid());
 }
+
+TEST_CASE("The filter does not find a target whose centre lies off the frame", "[filter]") {
+    TexturedScene scene;
+    auto f = std::make_unique<Images>();
+    f->chroma.present = true;
+    draw(scene, *f);
+    auto filter = std::make_unique<CorrelationFilter>();
+    filter->learn(f->smoothed, f->chroma, scene.target, 2.0 * TexturedScene::kHalf, 1.0f);
+
+    // Its centre just inside the top of the frame: found there.
+    scene.target = {48.0, 3.0};
+    draw(scene, *f);
+    const rays::FilterMatch inside = filter->locate(f->smoothed, f->chroma, {48.0, 12.0});
+    INFO("centre in the frame: found at " << inside.at.x << "," << inside.at.y << ", psr " << inside.psr);
+    CHECK(std::hypot(inside.at.x - scene.target.x, inside.at.y - scene.target.y) < 1.5);
+    CHECK(inside.psr > 8.0);
+    // Its centre above the frame, its lower part in view: the response peaks off the frame (without the
+    // rule, at PSR 8.9), and that is not a find.
+    scene.target = {48.0, -2.0};
+    draw(scene, *f);
+    const rays::FilterMatch beyond = filter->locate(f->smoothed, f->chroma, {48.0, 4.0});
+    INFO("centre off the frame: found at " << beyond.at.x << "," << beyond.at.y << ", psr " << beyond.psr);
+    CHECK(std::hypot(beyond.at.x - scene.target.x, beyond.at.y - scene.target.y) < 1.5);
+    CHECK(beyond.psr == 0.0);
+}

@@ -9,7 +9,7 @@ import subprocess
 import sys
 import tempfile
 
-from . import overlay, score, y4m
+from . import overlay, score, variants, y4m
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
@@ -47,6 +47,7 @@ losses and times are measured; --overlay shows the runs side by side to look at 
 
   tools/rays-compare ../shared/realset/*
   tools/rays-compare --overlay /tmp/overlay --trackers rays-point,csrt MY_SEQ
+  tools/rays-compare --variants reversed,every-2nd --trackers rays-point,rays-box,csrt ../shared/realset/*
 
 Trackers (--trackers):
   rays-point  rays-replay --init X,Y from "init" (a user's click)
@@ -58,6 +59,12 @@ Trackers (--trackers):
               centre_in_box. How much the outcome hangs on the exact click.
   csrt, kcf   cv2.TrackerCSRT_create, cv2.TrackerKCF_create  } started on "init_box", on the same
   mosse       cv2.legacy.TrackerMOSSE_create                 } frames converted to BGR
+With --variants, each folder is also compared as it is played backwards (NAME-reversed: started from
+its last frame, "init" at that frame's mask's deepest point, or its box's centre) and at every 2nd frame
+(NAME-every-2nd: twice the motion per frame), the ground truth moved with the frames
+(tools/rays_compare/variants.py; written under --work, or a temporary folder): a change tuned to the
+footage as it was recorded shows there.
+
 The sequence is given to rays-replay as it is (it scales to 128x128 itself); X,Y and the box are mapped
 to its processing pixels, its contours back through its header's scale and offset.
 
@@ -94,6 +101,9 @@ def parse_args(argv):
                     help="write DIR/SEQUENCE.y4m per sequence: the trackers side by side, contour or box drawn")
     ap.add_argument("--overlay-scale", type=int, default=2, metavar="N", help="tile enlargement (default 2)")
     ap.add_argument("--work", metavar="DIR", help="keep each run's JSON Lines as DIR/SEQUENCE/TRACKER.jsonl")
+    ap.add_argument("--variants", default="", metavar="LIST",
+                    help="also each folder played backwards and at every 2nd frame: comma-separated, from "
+                         + ", ".join(variants.KINDS) + " (needs boxes.csv)")
     ap.add_argument("--opencv-python", metavar="PATH", help="the Python with python3-opencv for the OpenCV runs")
     ap.add_argument("--opencv-threads", type=int, default=1, metavar="N",
                     help="cv2.setNumThreads for the OpenCV runs (default 1: one core, as the tracker; -1 leaves OpenCV's default)")
@@ -103,6 +113,10 @@ def parse_args(argv):
     if bad or not chosen:
         ap.error(f"--trackers: unknown {', '.join(bad) or '(none given)'}; choose from {', '.join(TRACKERS)}")
     args.trackers = chosen
+    args.variants = [v.strip() for v in args.variants.split(",") if v.strip()]
+    bad = [v for v in args.variants if v not in variants.KINDS]
+    if bad:
+        ap.error(f"--variants: unknown {', '.join(bad)}; choose from {', '.join(variants.KINDS)}")
     return args
 
 
@@ -307,6 +321,22 @@ def table(rows):
     return "\n".join(lines)
 
 
+def compare_folder(seq, args, work, opencv_py, opencv_ok, shown, rows, log):
+    """Appends one folder's rows; True when a run failed."""
+    failed = False
+    try:
+        for r in compare_sequence(seq, args, work, opencv_py, opencv_ok, log):
+            if r["tracker"] in shown:
+                rows.append(r)
+            failed |= r["status"] == "failed"
+    except (OSError, ValueError, KeyError) as e:
+        log(f"rays-compare: {seq}: {e}")
+        rows.append({"sequence": os.path.basename(os.path.normpath(seq)), "tracker": "-", "label": "-",
+                     "status": "failed", "note": str(e)})
+        failed = True
+    return failed
+
+
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
     err = sys.stderr
@@ -357,15 +387,16 @@ def main(argv=None):
     try:
         for s in sequences:
             try:
-                for r in compare_sequence(s, args, work, opencv_py, opencv_ok, log):
-                    if r["tracker"] in shown:
-                        rows.append(r)
-                    failed |= r["status"] == "failed"
+                # The folder as it is, then its variants (each written once, under the work folder).
+                folders = [s] + [variants.derive(s, kind, os.path.join(work, "variants")) for kind in args.variants]
             except (OSError, ValueError, KeyError) as e:
                 log(f"rays-compare: {s}: {e}")
                 rows.append({"sequence": os.path.basename(os.path.normpath(s)), "tracker": "-", "label": "-",
                              "status": "failed", "note": str(e)})
                 failed = True
+                continue
+            for folder in folders:
+                failed |= compare_folder(folder, args, work, opencv_py, opencv_ok, shown, rows, log)
     finally:
         if not args.work:
             shutil.rmtree(work, ignore_errors=True)

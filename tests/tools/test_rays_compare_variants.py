@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""rays-compare's variants (tools/rays_compare/variants.py) of a sequence this test writes: played
+backwards and at every 2nd frame, the ground truth moved with the frames, the reversed start at the last
+frame's mask's deepest point; and the tool running them (--variants) beside the folder itself.
+
+usage: test_rays_compare_variants.py REPO_DIR RAYS_REPLAY
+"""
+import atexit
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+REPO, RAYS_REPLAY = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.join(REPO, "tools"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from rays_compare import variants, y4m  # noqa: E402
+import rays_compare_fixture as fx  # noqa: E402
+
+failures = []
+
+
+def check(what, ok, detail=""):
+    print(f"{'ok  ' if ok else 'FAIL'} {what}{': ' + detail if detail else ''}")
+    if not ok:
+        failures.append(what)
+
+
+work = tempfile.mkdtemp(prefix="test-rays-compare-variants-")
+atexit.register(shutil.rmtree, work, True)
+
+# An L whose box's centre lies outside it: a vertical arm 30 px wide (x 10..39, y 10..99) and a
+# horizontal one 14 px tall (x 10..99, y 86..99). Its deepest point is on the wide arm's middle line.
+mask = bytearray(fx.rect_mask(10, 10, 39, 99))
+for y in range(86, 100):
+    mask[y * fx.W + 10:y * fx.W + 100] = b"\xff" * 90
+point = variants.deepest_point(mask, fx.W, fx.H)
+check("the L's deepest point lies on its wide arm's middle line", point is not None and 24 <= point[0] <= 25
+      and 24 <= point[1] <= 85, f"{point}")
+check("an empty mask has no deepest point", variants.deepest_point(bytearray(fx.W * fx.H), fx.W, fx.H) is None)
+
+# A disc moving 2 px right a frame over 7 frames; frame i's luma carries its index in pixel (0, 0).
+seq = os.path.join(work, "disc")
+meta = fx.moving_disc(seq, frames=7, radius=12, start=(40, 60), step=(2, 0))
+video = y4m.read(os.path.join(seq, "seq.y4m"))
+frames = [bytearray(f[0]) for f in video.frames]
+for i, f in enumerate(frames):
+    f[0] = i
+fx.write_sequence(seq, frames, [(f[1], f[2]) for f in video.frames],
+                  [m[0] for m in y4m.read(os.path.join(seq, "masks.y4m")).frames],
+                  variants.read_boxes(os.path.join(seq, "boxes.csv")), meta)
+boxes = variants.read_boxes(os.path.join(seq, "boxes.csv"))
+
+rev = variants.derive(seq, "reversed", os.path.join(work, "variants"))
+check("the reversed folder is named after the kind", os.path.basename(rev) == "disc-reversed", rev)
+r = y4m.read(os.path.join(rev, "seq.y4m"))
+check("reversed: the frames backwards", [f[0][0] for f in r.frames] == [6, 5, 4, 3, 2, 1, 0],
+      f"{[f[0][0] for f in r.frames]}")
+check("reversed: the chroma moves with its luma", r.frames[0][1:] == video.frames[6][1:])
+rboxes = variants.read_boxes(os.path.join(rev, "boxes.csv"))
+check("reversed: frame k's box is frame 6 - k's", all(rboxes[k] == boxes[6 - k] for k in range(7)))
+rmasks = y4m.read(os.path.join(rev, "masks.y4m"))
+check("reversed: the masks backwards", rmasks.frames[0][0][60 * fx.W + 52] == 255 and rmasks.frames[0][0][60 * fx.W + 38] == 0)
+rmeta = json.load(open(os.path.join(rev, "meta.json")))
+check("reversed: starts at the last frame's disc centre (its mask's deepest point)", rmeta["init"] == [52, 60], f"{rmeta['init']}")
+b6 = boxes[6]
+check("reversed: init_box is the last frame's box", rmeta["init_box"] == [b6[0], b6[1], b6[2] - b6[0], b6[3] - b6[1]],
+      f"{rmeta['init_box']}")
+check("reversed: frame count and origin", rmeta["frames"] == 7 and rmeta["derived_from"] == "disc")
+
+two = variants.derive(seq, "every-2nd", os.path.join(work, "variants"))
+t = y4m.read(os.path.join(two, "seq.y4m"))
+check("every-2nd: frames 0, 2, 4, 6", [f[0][0] for f in t.frames] == [0, 2, 4, 6], f"{[f[0][0] for f in t.frames]}")
+check("every-2nd: half the frame rate", t.fps == (30, 2), f"{t.fps}")
+tboxes = variants.read_boxes(os.path.join(two, "boxes.csv"))
+check("every-2nd: frame k's box is frame 2k's", all(tboxes[k] == boxes[2 * k] for k in range(4)))
+tmeta = json.load(open(os.path.join(two, "meta.json")))
+check("every-2nd: the sequence's own start", tmeta["init"] == meta["init"] and tmeta["init_box"] == meta["init_box"])
+
+os.remove(os.path.join(seq, "boxes.csv"))
+try:
+    variants.derive(seq, "reversed", os.path.join(work, "none"))
+    check("reversed without boxes.csv is refused", False)
+except ValueError as e:
+    check("reversed without boxes.csv is refused, saying why", "boxes.csv" in str(e), str(e))
+fx.write_sequence(seq, frames, [(f[1], f[2]) for f in video.frames],
+                  [m[0] for m in y4m.read(os.path.join(seq, "masks.y4m")).frames], boxes, meta)
+
+# The tool: the folder and its two variants, each scored (the disc is easy: tracked in every frame).
+p = subprocess.run([sys.executable, os.path.join(REPO, "tools", "rays-compare"), "--rays-replay", RAYS_REPLAY,
+                    "--trackers", "rays-point", "--variants", "reversed,every-2nd", "--json", seq],
+                   capture_output=True, text=True)
+check("rays-compare --variants exits 0", p.returncode == 0, "" if p.returncode == 0 else p.stderr.strip()[-300:])
+try:
+    rows = json.loads(p.stdout)["results"]
+except ValueError:
+    rows = []
+by_name = {row["sequence"]: row for row in rows}
+check("rows for the folder and both variants", sorted(by_name) == ["disc", "disc-every-2nd", "disc-reversed"],
+      f"{sorted(by_name)}")
+for name, row in sorted(by_name.items()):
+    check(f"{name}: the disc's centre in its box in every frame", row.get("centre_in_box") == 1.0,
+          f"{row.get('centre_in_box')}")
+bad = subprocess.run([sys.executable, os.path.join(REPO, "tools", "rays-compare"), "--variants", "sideways", seq],
+                     capture_output=True, text=True)
+unknown = bad.returncode == 2 and "--variants: unknown sideways" in bad.stderr
+check("an unknown variant is a usage error", unknown, "" if unknown else bad.stderr.strip()[-200:])
+
+print(f"{len(failures)} failed" if failures else "all passed")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,115 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Sequence folders derived from one with ground truth, so that a change is judged beyond the exact
+footage it was measured on (rays-compare --variants):
+
+  reversed   the frames played backwards: the target is met from its last frame's side, and the start
+             is that frame's: "init" at the mask's deepest point (the point farthest from its outside,
+             where a person would click; the realset's own "init" points are within a pixel of it), or
+             the box's centre without masks; "init_box" that frame's box
+  every-2nd  frames 0, 2, 4, ...: twice the motion between frames, at half the frame rate; the start
+             is the sequence's own
+
+Pure Python, as the rest of rays-compare. The ground truth (boxes.csv, masks.y4m) moves with the frames.
+"""
+import csv
+import json
+import os
+
+from . import y4m
+
+KINDS = ("reversed", "every-2nd")
+
+
+def frame_order(kind, count):
+    if kind == "reversed":
+        return list(range(count - 1, -1, -1))
+    if kind == "every-2nd":
+        return list(range(0, count, 2))
+    raise ValueError(f"unknown variant {kind!r}; choose from {', '.join(KINDS)}")
+
+
+def deepest_point(plane, width, height):
+    """(x, y) of the mask pixel (> 127) farthest from the mask's outside (the frame's border counts as
+    outside), by the 3-4 chamfer distance; the first such pixel in row order; None for an empty mask."""
+    far = 1 << 30
+    d = [0 if plane[i] <= 127 else far for i in range(width * height)]
+    for y in range(height):  # forward: the neighbours above and to the left
+        for x in range(width):
+            i = y * width + x
+            if d[i] == 0:
+                continue
+            v = d[i]
+            v = min(v, d[i - 1] + 3 if x > 0 else 3)
+            if y > 0:
+                v = min(v, d[i - width] + 3, d[i - width - 1] + 4 if x > 0 else 4,
+                        d[i - width + 1] + 4 if x + 1 < width else 4)
+            else:
+                v = min(v, 3)
+            d[i] = v
+    for y in range(height - 1, -1, -1):  # backward: below and to the right
+        for x in range(width - 1, -1, -1):
+            i = y * width + x
+            if d[i] == 0:
+                continue
+            v = d[i]
+            v = min(v, d[i + 1] + 3 if x + 1 < width else 3)
+            if y + 1 < height:
+                v = min(v, d[i + width] + 3, d[i + width + 1] + 4 if x + 1 < width else 4,
+                        d[i + width - 1] + 4 if x > 0 else 4)
+            else:
+                v = min(v, 3)
+            d[i] = v
+    best = max(range(width * height), key=lambda i: (d[i], -i))
+    return None if d[best] == 0 else (best % width, best // width)
+
+
+def read_boxes(path):
+    with open(path) as f:
+        return {int(r["frame"]): tuple(float(r[k]) for k in ("x0", "y0", "x1", "y1")) for r in csv.DictReader(f)}
+
+
+def derive(seq, kind, out_root):
+    """Writes the `kind` variant of sequence folder `seq` as out_root/NAME-KIND and returns that folder.
+    The reversed variant needs boxes.csv (its start is the last frame's)."""
+    name = os.path.basename(os.path.normpath(seq))
+    with open(os.path.join(seq, "meta.json")) as f:
+        meta = json.load(f)
+    video = y4m.read(os.path.join(seq, "seq.y4m"))
+    order = frame_order(kind, len(video.frames))
+    boxes_path, masks_path = os.path.join(seq, "boxes.csv"), os.path.join(seq, "masks.y4m")
+    boxes = read_boxes(boxes_path) if os.path.isfile(boxes_path) else None
+    masks = y4m.read(masks_path) if os.path.isfile(masks_path) else None
+    if kind == "reversed" and (boxes is None or order[0] not in boxes):
+        raise ValueError(f"{name}: the reversed variant needs boxes.csv with the last frame's box")
+
+    out = os.path.join(out_root, f"{name}-{kind}")
+    os.makedirs(out, exist_ok=True)
+    fps = video.fps if kind == "reversed" else (video.fps[0], video.fps[1] * 2)
+    y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height, [video.frames[i] for i in order],
+              video.colour, fps)
+    if masks is not None:
+        y4m.write(os.path.join(out, "masks.y4m"), masks.width, masks.height,
+                  [masks.frames[i] for i in order if i < len(masks.frames)], masks.colour, fps)
+    if boxes is not None:
+        with open(os.path.join(out, "boxes.csv"), "w") as f:
+            f.write("frame,x0,y0,x1,y1\n")
+            for k, i in enumerate(order):
+                if i in boxes:
+                    f.write(f"{k}," + ",".join(f"{v:.3f}" for v in boxes[i]) + "\n")
+
+    derived = dict(meta, name=f"{name}-{kind}", frames=len(order), derived_from=name, variant=kind)
+    if "fps" in meta and kind == "every-2nd":
+        derived["fps"] = meta["fps"] / 2
+    if kind == "reversed":
+        x0, y0, x1, y1 = boxes[order[0]]
+        derived["init_box"] = [x0, y0, x1 - x0, y1 - y0]
+        point = None
+        if masks is not None and order[0] < len(masks.frames):
+            point = deepest_point(masks.frames[order[0]][0], masks.width, masks.height)
+        if point:  # in the sequence's pixels (pixel centres at integers), should the masks be another size
+            sx, sy = video.width / masks.width, video.height / masks.height
+            point = ((point[0] + 0.5) * sx - 0.5, (point[1] + 0.5) * sy - 0.5)
+        derived["init"] = list(point) if point else [(x0 + x1) / 2, (y0 + y1) / 2]
+    with open(os.path.join(out, "meta.json"), "w") as f:
+        json.dump(derived, f, indent=1)
+    return out

@@ -65,6 +65,15 @@ void draw(const TexturedScene& scene, Images& f, bool covered = false) {
     smoother.smooth(f.luma, f.smoothed);
 }
 
+// The scene drawn in colour, and a new filter learned on its target.
+std::unique_ptr<CorrelationFilter> learned_on(const TexturedScene& scene, Images& f) {
+    f.chroma.present = true;
+    draw(scene, f);
+    auto filter = std::make_unique<CorrelationFilter>();
+    filter->learn(f.smoothed, f.chroma, scene.target, 2.0 * TexturedScene::kHalf, 1.0f);
+    return filter;
+}
+
 }  // namespace
 
 TEST_CASE("The filter finds a textured target that moved on a panning textured background", "[filter]") {
@@ -98,10 +107,7 @@ TEST_CASE("The filter finds a textured target that moved on a panning textured b
 TEST_CASE("The filter's confidence collapses when the target is covered", "[filter]") {
     TexturedScene scene;
     auto f = std::make_unique<Images>();
-    f->chroma.present = true;
-    draw(scene, *f);
-    auto filter = std::make_unique<CorrelationFilter>();
-    filter->learn(f->smoothed, f->chroma, scene.target, 2.0 * TexturedScene::kHalf, 1.0f);
+    auto filter = learned_on(scene, *f);
 
     scene.pan = {-3.0, 1.0};
     draw(scene, *f);
@@ -116,11 +122,8 @@ TEST_CASE("The filter's confidence collapses when the target is covered", "[filt
 TEST_CASE("A filter's learned looks copied into another find the target as the original does, and stay as they were", "[filter]") {
     TexturedScene scene;
     auto f = std::make_unique<Images>();
-    f->chroma.present = true;
-    draw(scene, *f);
-    auto filter = std::make_unique<CorrelationFilter>();
+    auto filter = learned_on(scene, *f);
     auto copy = std::make_unique<CorrelationFilter>();
-    filter->learn(f->smoothed, f->chroma, scene.target, 2.0 * TexturedScene::kHalf, 1.0f);
     copy->copy_learned(*filter);
     REQUIRE(copy->valid());
     CHECK(copy->window_px() == filter->window_px());
@@ -158,10 +161,7 @@ TEST_CASE("The filter's window follows the target's size, within the frame", "[f
 TEST_CASE("The filter does not find a target whose centre lies off the frame", "[filter]") {
     TexturedScene scene;
     auto f = std::make_unique<Images>();
-    f->chroma.present = true;
-    draw(scene, *f);
-    auto filter = std::make_unique<CorrelationFilter>();
-    filter->learn(f->smoothed, f->chroma, scene.target, 2.0 * TexturedScene::kHalf, 1.0f);
+    auto filter = learned_on(scene, *f);
 
     // Its centre just inside the top of the frame: found there.
     scene.target = {48.0, 3.0};

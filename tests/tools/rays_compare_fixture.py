@@ -1,10 +1,34 @@
 # SPDX-License-Identifier: Apache-2.0
 """Tiny sequence folders in the realset layout (seq.y4m, masks.y4m, boxes.csv, meta.json), written by the
 rays-compare tests themselves, pure Python."""
+import atexit
 import json
 import os
+import shutil
+import sys
+import tempfile
 
 W = H = 128
+failures = []
+
+
+def check(what, ok, detail=""):
+    """Prints one check's outcome; finish() fails the test if any did not hold."""
+    print(f"{'ok  ' if ok else 'FAIL'} {what}{': ' + detail if detail else ''}")
+    if not ok:
+        failures.append(what)
+
+
+def finish():
+    print(f"{len(failures)} failed" if failures else "all checks passed")
+    sys.exit(1 if failures else 0)
+
+
+def work_folder(prefix):
+    """A temporary folder, removed when the test exits."""
+    work = tempfile.mkdtemp(prefix=prefix)
+    atexit.register(shutil.rmtree, work, True)
+    return work
 
 
 def _y4m(path, frames, colour):

@@ -6,13 +6,10 @@ SKIPPED line, and the rays runs on a tiny sequence this test writes still scored
 
 usage: test_rays_compare_tool.py REPO_DIR RAYS_REPLAY
 """
-import atexit
 import json
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 
 REPO, RAYS_REPLAY = sys.argv[1], sys.argv[2]
 TOOL = os.path.join(REPO, "tools", "rays-compare")
@@ -23,17 +20,8 @@ import rays_compare_fixture as fx  # noqa: E402
 
 NO_OPENCV = "SKIPPED: OpenCV trackers: python3-opencv is not installed (apt-get install python3-opencv)"
 BOX_UNSUPPORTED = "box start not supported by this rays-replay"
-failures = []
-
-
-def check(what, ok, detail=""):
-    print(f"{'ok  ' if ok else 'FAIL'} {what}{': ' + detail if detail else ''}")
-    if not ok:
-        failures.append(what)
-
-
-work = tempfile.mkdtemp(prefix="test-rays-compare-tool-")
-atexit.register(shutil.rmtree, work, True)
+check = fx.check
+work = fx.work_folder("test-rays-compare-tool-")
 seq = os.path.join(work, "disc")
 fx.moving_disc(seq, frames=12)
 fake = os.path.join(work, "no-opencv")
@@ -132,5 +120,4 @@ p = tool("--trackers", "rays-point-nudged", seq)
 check("nudged: the table's note names the worst start per sequence",
       "note: rays (point ±3): the mean of 13 starts" in p.stdout and "disc " in p.stdout.split("worst start's centre_in_box:")[-1])
 
-print(f"{len(failures)} failed" if failures else "all checks passed")
-sys.exit(1 if failures else 0)
+fx.finish()

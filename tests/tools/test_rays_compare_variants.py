@@ -6,13 +6,10 @@ frame's mask's deepest point; and the tool running them (--variants) beside the 
 
 usage: test_rays_compare_variants.py REPO_DIR RAYS_REPLAY
 """
-import atexit
 import json
 import os
-import shutil
 import subprocess
 import sys
-import tempfile
 
 REPO, RAYS_REPLAY = sys.argv[1], sys.argv[2]
 sys.path.insert(0, os.path.join(REPO, "tools"))
@@ -20,17 +17,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from rays_compare import variants, y4m  # noqa: E402
 import rays_compare_fixture as fx  # noqa: E402
 
-failures = []
-
-
-def check(what, ok, detail=""):
-    print(f"{'ok  ' if ok else 'FAIL'} {what}{': ' + detail if detail else ''}")
-    if not ok:
-        failures.append(what)
-
-
-work = tempfile.mkdtemp(prefix="test-rays-compare-variants-")
-atexit.register(shutil.rmtree, work, True)
+check = fx.check
+work = fx.work_folder("test-rays-compare-variants-")
 
 # An L whose box's centre lies outside it: a vertical arm 30 px wide (x 10..39, y 10..99) and a
 # horizontal one 14 px tall (x 10..99, y 86..99). Its deepest point is on the wide arm's middle line.
@@ -86,6 +74,17 @@ try:
     check("reversed without boxes.csv is refused", False)
 except ValueError as e:
     check("reversed without boxes.csv is refused, saying why", "boxes.csv" in str(e), str(e))
+# The tool still compares the folder itself, and reports the variant it could not make as a failed row.
+p = subprocess.run([sys.executable, os.path.join(REPO, "tools", "rays-compare"), "--rays-replay", RAYS_REPLAY,
+                    "--trackers", "rays-point", "--variants", "reversed", "--json", seq], capture_output=True, text=True)
+try:
+    rows = {row["sequence"]: row for row in json.loads(p.stdout)["results"]}
+except ValueError:
+    rows = {}
+check("without boxes.csv: the folder compared, the reversed variant a failed row, exit 1",
+      p.returncode == 1 and rows.get("disc", {}).get("status") == "ok"
+      and rows.get("disc-reversed", {}).get("status") == "failed" and "boxes.csv" in rows["disc-reversed"]["note"],
+      f"exit {p.returncode}, rows {sorted(rows)}")
 fx.write_sequence(seq, frames, [(f[1], f[2]) for f in video.frames],
                   [m[0] for m in y4m.read(os.path.join(seq, "masks.y4m")).frames], boxes, meta)
 
@@ -109,5 +108,4 @@ bad = subprocess.run([sys.executable, os.path.join(REPO, "tools", "rays-compare"
 unknown = bad.returncode == 2 and "--variants: unknown sideways" in bad.stderr
 check("an unknown variant is a usage error", unknown, "" if unknown else bad.stderr.strip()[-200:])
 
-print(f"{len(failures)} failed" if failures else "all passed")
-sys.exit(1 if failures else 0)
+fx.finish()

@@ -321,20 +321,21 @@ def table(rows):
     return "\n".join(lines)
 
 
+def failure_row(name, error, rows, log):
+    """A folder that could not be compared: said on stderr and as a row of its own."""
+    log(f"rays-compare: {name}: {error}")
+    rows.append({"sequence": name, "tracker": "-", "label": "-", "status": "failed", "note": str(error)})
+
+
 def compare_folder(seq, args, work, opencv_py, opencv_ok, shown, rows, log):
     """Appends one folder's rows; True when a run failed."""
-    failed = False
     try:
-        for r in compare_sequence(seq, args, work, opencv_py, opencv_ok, log):
-            if r["tracker"] in shown:
-                rows.append(r)
-            failed |= r["status"] == "failed"
+        found = compare_sequence(seq, args, work, opencv_py, opencv_ok, log)
     except (OSError, ValueError, KeyError) as e:
-        log(f"rays-compare: {seq}: {e}")
-        rows.append({"sequence": os.path.basename(os.path.normpath(seq)), "tracker": "-", "label": "-",
-                     "status": "failed", "note": str(e)})
-        failed = True
-    return failed
+        failure_row(os.path.basename(os.path.normpath(seq)), e, rows, log)
+        return True
+    rows.extend(r for r in found if r["tracker"] in shown)
+    return any(r["status"] == "failed" for r in found)
 
 
 def main(argv=None):
@@ -386,16 +387,14 @@ def main(argv=None):
     rows, failed = [], False
     try:
         for s in sequences:
-            try:
-                # The folder as it is, then its variants (each written once, under the work folder).
-                folders = [s] + [variants.derive(s, kind, os.path.join(work, "variants")) for kind in args.variants]
-            except (OSError, ValueError, KeyError) as e:
-                log(f"rays-compare: {s}: {e}")
-                rows.append({"sequence": os.path.basename(os.path.normpath(s)), "tracker": "-", "label": "-",
-                             "status": "failed", "note": str(e)})
-                failed = True
-                continue
-            for folder in folders:
+            failed |= compare_folder(s, args, work, opencv_py, opencv_ok, shown, rows, log)
+            for kind in args.variants:  # each written once, under the work folder
+                try:
+                    folder = variants.derive(s, kind, os.path.join(work, "variants"))
+                except (OSError, ValueError, KeyError) as e:
+                    failure_row(f"{os.path.basename(os.path.normpath(s))}-{kind}", e, rows, log)
+                    failed = True
+                    continue
                 failed |= compare_folder(folder, args, work, opencv_py, opencv_ok, shown, rows, log)
     finally:
         if not args.work:

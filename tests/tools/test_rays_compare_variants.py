@@ -14,7 +14,7 @@ import sys
 REPO, RAYS_REPLAY = sys.argv[1], sys.argv[2]
 sys.path.insert(0, os.path.join(REPO, "tools"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from rays_compare import variants, y4m  # noqa: E402
+from rays_compare import score, variants, y4m  # noqa: E402
 import rays_compare_fixture as fx  # noqa: E402
 
 check = fx.check
@@ -39,8 +39,8 @@ for i, f in enumerate(frames):
     f[0] = i
 fx.write_sequence(seq, frames, [(f[1], f[2]) for f in video.frames],
                   [m[0] for m in y4m.read(os.path.join(seq, "masks.y4m")).frames],
-                  variants.read_boxes(os.path.join(seq, "boxes.csv")), meta)
-boxes = variants.read_boxes(os.path.join(seq, "boxes.csv"))
+                  score.load_truth(seq).boxes, meta)
+boxes = score.load_truth(seq).boxes
 
 rev = variants.derive(seq, "reversed", os.path.join(work, "variants"))
 check("the reversed folder is named after the kind", os.path.basename(rev) == "disc-reversed", rev)
@@ -48,7 +48,7 @@ r = y4m.read(os.path.join(rev, "seq.y4m"))
 check("reversed: the frames backwards", [f[0][0] for f in r.frames] == [6, 5, 4, 3, 2, 1, 0],
       f"{[f[0][0] for f in r.frames]}")
 check("reversed: the chroma moves with its luma", r.frames[0][1:] == video.frames[6][1:])
-rboxes = variants.read_boxes(os.path.join(rev, "boxes.csv"))
+rboxes = score.load_truth(rev).boxes
 check("reversed: frame k's box is frame 6 - k's", all(rboxes[k] == boxes[6 - k] for k in range(7)))
 rmasks = y4m.read(os.path.join(rev, "masks.y4m"))
 check("reversed: the masks backwards", rmasks.frames[0][0][60 * fx.W + 52] == 255 and rmasks.frames[0][0][60 * fx.W + 38] == 0)
@@ -63,7 +63,7 @@ two = variants.derive(seq, "every-2nd", os.path.join(work, "variants"))
 t = y4m.read(os.path.join(two, "seq.y4m"))
 check("every-2nd: frames 0, 2, 4, 6", [f[0][0] for f in t.frames] == [0, 2, 4, 6], f"{[f[0][0] for f in t.frames]}")
 check("every-2nd: half the frame rate", t.fps == (30, 2), f"{t.fps}")
-tboxes = variants.read_boxes(os.path.join(two, "boxes.csv"))
+tboxes = score.load_truth(two).boxes
 check("every-2nd: frame k's box is frame 2k's", all(tboxes[k] == boxes[2 * k] for k in range(4)))
 tmeta = json.load(open(os.path.join(two, "meta.json")))
 check("every-2nd: the sequence's own start", tmeta["init"] == meta["init"] and tmeta["init_box"] == meta["init_box"])

@@ -11,11 +11,10 @@ footage it was measured on (rays-compare --variants):
 
 Pure Python, as the rest of rays-compare. The ground truth (boxes.csv, masks.y4m) moves with the frames.
 """
-import csv
 import json
 import os
 
-from . import y4m
+from . import score, y4m
 
 KINDS = ("reversed", "every-2nd")
 
@@ -63,11 +62,6 @@ def deepest_point(plane, width, height):
     return None if d[best] == 0 else (best % width, best // width)
 
 
-def read_boxes(path):
-    with open(path) as f:
-        return {int(r["frame"]): tuple(float(r[k]) for k in ("x0", "y0", "x1", "y1")) for r in csv.DictReader(f)}
-
-
 def derive(seq, kind, out_root):
     """Writes the `kind` variant of sequence folder `seq` as out_root/NAME-KIND and returns that folder.
     The reversed variant needs boxes.csv (its start is the last frame's)."""
@@ -76,9 +70,8 @@ def derive(seq, kind, out_root):
         meta = json.load(f)
     video = y4m.read(os.path.join(seq, "seq.y4m"))
     order = frame_order(kind, len(video.frames))
-    boxes_path, masks_path = os.path.join(seq, "boxes.csv"), os.path.join(seq, "masks.y4m")
-    boxes = read_boxes(boxes_path) if os.path.isfile(boxes_path) else None
-    masks = y4m.read(masks_path) if os.path.isfile(masks_path) else None
+    truth = score.load_truth(seq, shape=(video.width, video.height, len(video.frames)))
+    boxes, masks = truth.boxes, truth.masks  # the scorer's reading of boxes.csv and masks.y4m
     if kind == "reversed" and (boxes is None or order[0] not in boxes):
         raise ValueError(f"{name}: the reversed variant needs boxes.csv with the last frame's box")
 
@@ -88,8 +81,8 @@ def derive(seq, kind, out_root):
     y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height, [video.frames[i] for i in order],
               video.colour, fps)
     if masks is not None:
-        y4m.write(os.path.join(out, "masks.y4m"), masks.width, masks.height,
-                  [masks.frames[i] for i in order if i < len(masks.frames)], masks.colour, fps)
+        y4m.write(os.path.join(out, "masks.y4m"), truth.width, truth.height,
+                  [(masks[i],) for i in order if i < len(masks)], "mono", fps)
     if boxes is not None:
         with open(os.path.join(out, "boxes.csv"), "w") as f:
             f.write("frame,x0,y0,x1,y1\n")
@@ -104,10 +97,10 @@ def derive(seq, kind, out_root):
         x0, y0, x1, y1 = boxes[order[0]]
         derived["init_box"] = [x0, y0, x1 - x0, y1 - y0]
         point = None
-        if masks is not None and order[0] < len(masks.frames):
-            point = deepest_point(masks.frames[order[0]][0], masks.width, masks.height)
+        if masks is not None and order[0] < len(masks):
+            point = deepest_point(masks[order[0]], truth.width, truth.height)
         if point:  # in the sequence's pixels (pixel centres at integers), should the masks be another size
-            sx, sy = video.width / masks.width, video.height / masks.height
+            sx, sy = video.width / truth.width, video.height / truth.height
             point = ((point[0] + 0.5) * sx - 0.5, (point[1] + 0.5) * sy - 0.5)
         derived["init"] = list(point) if point else [(x0 + x1) / 2, (y0 + y1) / 2]
     with open(os.path.join(out, "meta.json"), "w") as f:

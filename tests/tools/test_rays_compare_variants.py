@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """rays-compare's variants (tools/rays_compare/variants.py) of a sequence this test writes: played
-backwards and at every 2nd frame, the ground truth moved with the frames, the reversed start at the last
+backwards, at every 2nd frame and without its chroma, the ground truth moved with the frames, the reversed start at the last
 frame's mask's deepest point; and the tool running them (--variants) beside the folder itself.
 
 usage: test_rays_compare_variants.py REPO_DIR RAYS_REPLAY
@@ -68,6 +68,15 @@ check("every-2nd: frame k's box is frame 2k's", all(tboxes[k] == boxes[2 * k] fo
 tmeta = json.load(open(os.path.join(two, "meta.json")))
 check("every-2nd: the sequence's own start", tmeta["init"] == meta["init"] and tmeta["init_box"] == meta["init_box"])
 
+grey = variants.derive(seq, "grey", os.path.join(work, "variants"))
+g = y4m.read(os.path.join(grey, "seq.y4m"))
+check("grey: mono, the same frames' luma", g.colour == "mono" and [f[0] for f in g.frames] == [bytes(f) for f in frames]
+      and all(len(f) == 1 for f in g.frames), f"{g.colour}, {len(g.frames)} frames")
+check("grey: the frame rate and the ground truth unchanged", g.fps == video.fps and score.load_truth(grey).boxes == boxes)
+gmeta = json.load(open(os.path.join(grey, "meta.json")))
+check("grey: the sequence's own start", gmeta["init"] == meta["init"] and gmeta["init_box"] == meta["init_box"]
+      and gmeta["name"] == "disc-grey")
+
 os.remove(os.path.join(seq, "boxes.csv"))
 try:
     variants.derive(seq, "reversed", os.path.join(work, "none"))
@@ -90,7 +99,7 @@ fx.write_sequence(seq, frames, [(f[1], f[2]) for f in video.frames],
 
 # The tool: the folder and its two variants, each scored (the disc is easy: tracked in every frame).
 p = subprocess.run([sys.executable, os.path.join(REPO, "tools", "rays-compare"), "--rays-replay", RAYS_REPLAY,
-                    "--trackers", "rays-point", "--variants", "reversed,every-2nd", "--json", seq],
+                    "--trackers", "rays-point", "--variants", "reversed,every-2nd,grey", "--json", seq],
                    capture_output=True, text=True)
 check("rays-compare --variants exits 0", p.returncode == 0, "" if p.returncode == 0 else p.stderr.strip()[-300:])
 try:
@@ -98,7 +107,8 @@ try:
 except ValueError:
     rows = []
 by_name = {row["sequence"]: row for row in rows}
-check("rows for the folder and both variants", sorted(by_name) == ["disc", "disc-every-2nd", "disc-reversed"],
+check("rows for the folder and its three variants",
+      sorted(by_name) == ["disc", "disc-every-2nd", "disc-grey", "disc-reversed"],
       f"{sorted(by_name)}")
 for name, row in sorted(by_name.items()):
     check(f"{name}: the disc's centre in its box in every frame", row.get("centre_in_box") == 1.0,

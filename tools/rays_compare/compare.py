@@ -61,9 +61,9 @@ Trackers (--trackers):
   mosse       cv2.legacy.TrackerMOSSE_create                 } frames converted to BGR
 With --variants, each folder is also compared as it is played backwards (NAME-reversed: started from
 its last frame, "init" at that frame's mask's deepest point, or its box's centre) and at every 2nd frame
-(NAME-every-2nd: twice the motion per frame), the ground truth moved with the frames
-(tools/rays_compare/variants.py; written under --work, or a temporary folder): a change tuned to the
-footage as it was recorded shows there.
+(NAME-every-2nd: twice the motion per frame), the ground truth moved with the frames, and without its
+chroma (NAME-grey: what a mono camera gives). They are written under --work, or a temporary folder
+(tools/rays_compare/variants.py): a change tuned to the footage as it was recorded shows there.
 
 The sequence is given to rays-replay as it is (it scales to 128x128 itself); X,Y and the box are mapped
 to its processing pixels, its contours back through its header's scale and offset.
@@ -102,8 +102,8 @@ def parse_args(argv):
     ap.add_argument("--overlay-scale", type=int, default=2, metavar="N", help="tile enlargement (default 2)")
     ap.add_argument("--work", metavar="DIR", help="keep each run's JSON Lines as DIR/SEQUENCE/TRACKER.jsonl")
     ap.add_argument("--variants", default="", metavar="LIST",
-                    help="also each folder played backwards and at every 2nd frame: comma-separated, from "
-                         + ", ".join(variants.KINDS) + " (needs boxes.csv)")
+                    help="also each folder played backwards, at every 2nd frame or without its chroma: "
+                         "comma-separated, from " + ", ".join(variants.KINDS) + " (reversed needs boxes.csv)")
     ap.add_argument("--opencv-python", metavar="PATH", help="the Python with python3-opencv for the OpenCV runs")
     ap.add_argument("--opencv-threads", type=int, default=1, metavar="N",
                     help="cv2.setNumThreads for the OpenCV runs (default 1: one core, as the tracker; -1 leaves OpenCV's default)")

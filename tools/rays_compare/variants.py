@@ -8,6 +8,8 @@ footage it was measured on (rays-compare --variants):
              the box's centre without masks; "init_box" that frame's box
   every-2nd  frames 0, 2, 4, ...: twice the motion between frames, at half the frame rate; the start
              is the sequence's own
+  grey       the same frames without their chroma (a mono camera's picture: what the tracker has
+             where the source gives no colour); the start is the sequence's own
 
 Pure Python, as the rest of rays-compare. The ground truth (boxes.csv, masks.y4m) moves with the frames.
 """
@@ -16,7 +18,7 @@ import os
 
 from . import score, y4m
 
-KINDS = ("reversed", "every-2nd")
+KINDS = ("reversed", "every-2nd", "grey")
 
 
 def frame_order(kind, count):
@@ -24,6 +26,8 @@ def frame_order(kind, count):
         return list(range(count - 1, -1, -1))
     if kind == "every-2nd":
         return list(range(0, count, 2))
+    if kind == "grey":
+        return list(range(count))
     raise ValueError(f"unknown variant {kind!r}; choose from {', '.join(KINDS)}")
 
 
@@ -77,9 +81,13 @@ def derive(seq, kind, out_root):
 
     out = os.path.join(out_root, f"{name}-{kind}")
     os.makedirs(out, exist_ok=True)
-    fps = video.fps if kind == "reversed" else (video.fps[0], video.fps[1] * 2)
-    y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height, [video.frames[i] for i in order],
-              video.colour, fps)
+    fps = (video.fps[0], video.fps[1] * 2) if kind == "every-2nd" else video.fps
+    if kind == "grey":  # the luma plane alone
+        y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height, [video.frames[i][:1] for i in order],
+                  "mono", fps)
+    else:
+        y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height, [video.frames[i] for i in order],
+                  video.colour, fps)
     if masks is not None:
         y4m.write(os.path.join(out, "masks.y4m"), truth.width, truth.height,
                   [(masks[i],) for i in order if i < len(masks)], "mono", fps)

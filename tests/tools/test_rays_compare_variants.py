@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """rays-compare's variants (tools/rays_compare/variants.py) of a sequence this test writes: played
-backwards, at every 2nd frame and without its chroma, the ground truth moved with the frames, the reversed start at the last
-frame's mask's deepest point; and the tool running them (--variants) beside the folder itself.
+backwards, at every 2nd frame and without its chroma, the ground truth moved with the frames, the
+reversed start at the last frame's mask's deepest point; and the tool running them (--variants) beside
+the folder itself.
 
 usage: test_rays_compare_variants.py REPO_DIR RAYS_REPLAY
 """
@@ -97,7 +98,7 @@ check("without boxes.csv: the folder compared, the reversed variant a failed row
 fx.write_sequence(seq, frames, [(f[1], f[2]) for f in video.frames],
                   [m[0] for m in y4m.read(os.path.join(seq, "masks.y4m")).frames], boxes, meta)
 
-# The tool: the folder and its two variants, each scored (the disc is easy: tracked in every frame).
+# The tool: the folder and its three variants, each scored (the disc is easy: tracked in every frame).
 p = subprocess.run([sys.executable, os.path.join(REPO, "tools", "rays-compare"), "--rays-replay", RAYS_REPLAY,
                     "--trackers", "rays-point", "--variants", "reversed,every-2nd,grey", "--json", seq],
                    capture_output=True, text=True)

@@ -82,12 +82,9 @@ def derive(seq, kind, out_root):
     out = os.path.join(out_root, f"{name}-{kind}")
     os.makedirs(out, exist_ok=True)
     fps = (video.fps[0], video.fps[1] * 2) if kind == "every-2nd" else video.fps
-    if kind == "grey":  # the luma plane alone
-        y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height, [video.frames[i][:1] for i in order],
-                  "mono", fps)
-    else:
-        y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height, [video.frames[i] for i in order],
-                  video.colour, fps)
+    grey = kind == "grey"  # the luma plane alone
+    y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height,
+              [video.frames[i][:1] if grey else video.frames[i] for i in order], "mono" if grey else video.colour, fps)
     if masks is not None:
         y4m.write(os.path.join(out, "masks.y4m"), truth.width, truth.height,
                   [(masks[i],) for i in order if i < len(masks)], "mono", fps)

@@ -256,7 +256,6 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         attention_.reset();  // the contour it replaces is no previous frame's
         reason = attention_.check(contour_, contour_.centroid, limits);
     }
-    if (reason == nullptr && from == StartFrom::Filter && !looks_like_target()) reason = "not as grey as the target";
     // The same target found again is about its own size, not the block or group beside it.
     if (same_target) max_area = reacquire_bound();
     if (reason == nullptr && max_area > 0.0 && contour_.area > max_area) reason = "much bigger than the target";

@@ -31,7 +31,6 @@ constexpr double kRedetectShare = 0.5;  // of the target's mean PSR while tracke
                                         // elsewhere in the frame must reach (a textured background
                                         // gives 5–8 here and there; real targets 9–48, median)
 constexpr double kPsrRate = 0.1;        // weight of the newest frame in that mean
-constexpr int kKnownFrames = 10;         // frames a detector's target is followed by its rim before the filter may stand for it
 constexpr double kFilterAgreement = 1.0; // of the target's radius: a contour whose centroid is further from
                                          // a confident filter match has left the target
 constexpr double kViewAgreePx = 1.0;     // a view's measured shift within this of the unit's turning is the view's
@@ -270,10 +269,7 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     learn_colours(kColourRate);
     // A fresh re-acquisition (reacquire_afresh) keeps the filter until it is known to be the target.
     if (from != StartFrom::Prediction || same_target) learn_looks(same_target ? kFilterRate : 1.0f, from == StartFrom::Filter);
-    if (!same_target && from != StartFrom::Prediction) {
-        rim_frames_ = 0;
-        psr_tracked_ = 0.0;
-    }
+    if (!same_target && from != StartFrom::Prediction) psr_tracked_ = 0.0;
     model_.learn(contour_, scratch_);
     // A person's target as it looked at the start: the learned looks drift with the contour, this does not.
     if (from == StartFrom::Person && !same_target) {
@@ -400,9 +396,7 @@ void Tracker::track(TimePoint deadline) {
         if (reason && rays_.solve_without_jumps(prior_, contour_)) reason = check_contour(predicted, confident);
         if (!reason) break;
     }
-    // The filter stands for the rim only on a target it knows: one a person pointed at, or one
-    // whose rim it has followed for a while (a detector's start may be on clutter).
-    if (reason && confident && knows_target()) {
+    if (reason && confident) {
         // The rim is not found (covered, or lost in clutter), but the target's looks are: the last
         // contour, moved to where the filter found it, stands for it until the rim shows again —
         // if what it encloses there is about as grey as the target (not background the filter
@@ -420,7 +414,6 @@ void Tracker::track(TimePoint deadline) {
         return;
     }
     follow(last);
-    ++rim_frames_;
     learn_motion(last);
     if (match_.psr > 0.0) psr_tracked_ = psr_tracked_ == 0.0 ? match_.psr : psr_tracked_ + kPsrRate * (match_.psr - psr_tracked_);
     model_.learn(contour_, scratch_);
@@ -460,8 +453,6 @@ bool Tracker::looks_like_target() const {
 
 double Tracker::reacquire_bound() const { return std::max(tracked_area_, whole_area_.area()) / kReacquireAreaRatio; }
 
-bool Tracker::knows_target() const { return person_start_ || rim_frames_ >= kKnownFrames; }
-
 double Tracker::inside_grey_share() const { return mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0); }
 
 bool Tracker::as_grey_as_at_start() const {
@@ -469,7 +460,7 @@ bool Tracker::as_grey_as_at_start() const {
 }
 
 bool Tracker::look_again(TimePoint deadline) {
-    if (!filter_.valid() || !knows_target()) return false;
+    if (!filter_.valid()) return false;
     const double last_radius = std::sqrt(std::max(tracked_area_, whole_area_.area()) / std::numbers::pi);
     // First where it was last seen ...
     const FilterMatch near = filter_.locate(smoothed_, *chroma_, last_seen_);

@@ -81,9 +81,6 @@ private:
     // The previous frame aligned with this one by `shift`, the view's (the previous frame itself for
     // none), so that differencing shows what moved in the scene.
     const GreyImage& aligned_previous(Point shift);
-    // Whether the filter knows the target: one a person pointed at, or one whose rim it has followed
-    // for a while (a detector's start may be on clutter).
-    bool knows_target() const;
     // The largest contour that may be the lost target found again: a few times its size.
     double reacquire_bound() const;
     // Whether this frame's contour encloses about the grey a person's target had at its start: what
@@ -152,7 +149,6 @@ private:
     CorrelationFilter filter_;    // the target's looks, to find it before the rays look for its rim
     CorrelationFilter start_looks_;  // a person's target's looks at its first contour (not learned since)
     FilterMatch match_;           // where it found the target this frame
-    int rim_frames_ = 0;          // frames of this target whose contour was found by its rim
     const GreyImage* frame_ = nullptr;  // the frame being processed, and its colour
     const Chroma* chroma_ = nullptr;
     Attention attention_;

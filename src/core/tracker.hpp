@@ -73,7 +73,7 @@ private:
     bool reacquire_afresh(Point m, double radius, TimePoint deadline);
     // After a loss, the filter looks for the target's looks round where it was last seen, then over
     // the whole frame: true, and the track resumes, where it finds them surely and a contour round
-    // them passes the attention check at about the target's size.
+    // them passes the attention check, at most reacquire_bound().
     bool look_again(TimePoint deadline);
     // The best match in the next kSearchWindows windows of a sweep over the frame on a grid of half
     // the filter's window (the sweep goes on in the next frame where this one stopped).

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """rays-compare's variants (tools/rays_compare/variants.py) of a sequence this test writes: played
-backwards, at every 2nd frame and without its chroma, the ground truth moved with the frames, the
-reversed start at the last frame's mask's deepest point; and the tool running them (--variants) beside
-the folder itself.
+backwards, at every 2nd frame, without its chroma and to its end and back, the ground truth moved with
+the frames, the reversed start at the last frame's mask's deepest point; and the tool running them
+(--variants) beside the folder itself.
 
 usage: test_rays_compare_variants.py REPO_DIR RAYS_REPLAY
 """
@@ -78,6 +78,21 @@ gmeta = json.load(open(os.path.join(grey, "meta.json")))
 check("grey: the sequence's own start", gmeta["init"] == meta["init"] and gmeta["init_box"] == meta["init_box"]
       and gmeta["name"] == "disc-grey")
 
+back = variants.derive(seq, "there-and-back", os.path.join(work, "variants"))
+b = y4m.read(os.path.join(back, "seq.y4m"))
+check("there-and-back: frames 0 … 6, then 5 … 0", [f[0][0] for f in b.frames] == [0, 1, 2, 3, 4, 5, 6, 5, 4, 3, 2, 1, 0],
+      f"{[f[0][0] for f in b.frames]}")
+check("there-and-back: the chroma moves with its luma", b.frames[8][1:] == video.frames[4][1:])
+bboxes = score.load_truth(back).boxes
+check("there-and-back: frame k's box is frame 12 - k's on the way back",
+      all(bboxes[k] == boxes[k] for k in range(7)) and all(bboxes[k] == boxes[12 - k] for k in range(7, 13)))
+bmasks = y4m.read(os.path.join(back, "masks.y4m"))
+check("there-and-back: the masks moved with the frames", len(bmasks.frames) == 13 and bmasks.frames[12] == bmasks.frames[0]
+      and bmasks.frames[7] == bmasks.frames[5])
+bmeta = json.load(open(os.path.join(back, "meta.json")))
+check("there-and-back: the sequence's own start, 13 frames", bmeta["init"] == meta["init"] and
+      bmeta["init_box"] == meta["init_box"] and bmeta["frames"] == 13 and bmeta["name"] == "disc-there-and-back")
+
 os.remove(os.path.join(seq, "boxes.csv"))
 try:
     variants.derive(seq, "reversed", os.path.join(work, "none"))
@@ -98,9 +113,9 @@ check("without boxes.csv: the folder compared, the reversed variant a failed row
 fx.write_sequence(seq, frames, [(f[1], f[2]) for f in video.frames],
                   [m[0] for m in y4m.read(os.path.join(seq, "masks.y4m")).frames], boxes, meta)
 
-# The tool: the folder and its three variants, each scored (the disc is easy: tracked in every frame).
+# The tool: the folder and its four variants, each scored (the disc is easy: tracked in every frame).
 p = subprocess.run([sys.executable, os.path.join(REPO, "tools", "rays-compare"), "--rays-replay", RAYS_REPLAY,
-                    "--trackers", "rays-point", "--variants", "reversed,every-2nd,grey", "--json", seq],
+                    "--trackers", "rays-point", "--variants", "reversed,every-2nd,grey,there-and-back", "--json", seq],
                    capture_output=True, text=True)
 check("rays-compare --variants exits 0", p.returncode == 0, "" if p.returncode == 0 else p.stderr.strip()[-300:])
 try:
@@ -108,8 +123,8 @@ try:
 except ValueError:
     rows = []
 by_name = {row["sequence"]: row for row in rows}
-check("rows for the folder and its three variants",
-      sorted(by_name) == ["disc", "disc-every-2nd", "disc-grey", "disc-reversed"],
+check("rows for the folder and its four variants",
+      sorted(by_name) == ["disc", "disc-every-2nd", "disc-grey", "disc-reversed", "disc-there-and-back"],
       f"{sorted(by_name)}")
 for name, row in sorted(by_name.items()):
     check(f"{name}: the disc's centre in its box in every frame", row.get("centre_in_box") == 1.0,

@@ -62,8 +62,10 @@ Trackers (--trackers):
 With --variants, each folder is also compared as it is played backwards (NAME-reversed: started from
 its last frame, "init" at that frame's mask's deepest point, or its box's centre) and at every 2nd frame
 (NAME-every-2nd: twice the motion per frame), the ground truth moved with the frames, and without its
-chroma (NAME-grey: what a mono camera gives). They are written under --work, or a temporary folder
-(tools/rays_compare/variants.py): a change tuned to the footage as it was recorded shows there.
+chroma (NAME-grey: what a mono camera gives), and played to its end and back (NAME-there-and-back:
+twice as long, the target turning back where the footage ends). They are written under --work, or a
+temporary folder (tools/rays_compare/variants.py): a change tuned to the footage as it was recorded
+shows there.
 
 The sequence is given to rays-replay as it is (it scales to 128x128 itself); X,Y and the box are mapped
 to its processing pixels, its contours back through its header's scale and offset.

@@ -10,6 +10,10 @@ footage it was measured on (rays-compare --variants):
              is the sequence's own
   grey       the same frames without their chroma (a mono camera's picture: what the tracker has
              where the source gives no colour); the start is the sequence's own
+  there-and-back  frames 0 … N−1, then N−2 … 0: twice as long, and the target stops where the
+             footage ends and retraces its path (a walker who turns back while others go on); the
+             models learned on the way out meet the target again as it looked at the start; the
+             start is the sequence's own
 
 Pure Python, as the rest of rays-compare. The ground truth (boxes.csv, masks.y4m) moves with the frames.
 """
@@ -18,7 +22,7 @@ import os
 
 from . import score, y4m
 
-KINDS = ("reversed", "every-2nd", "grey")
+KINDS = ("reversed", "every-2nd", "grey", "there-and-back")
 
 
 def frame_order(kind, count):
@@ -28,6 +32,8 @@ def frame_order(kind, count):
         return list(range(0, count, 2))
     if kind == "grey":
         return list(range(count))
+    if kind == "there-and-back":
+        return list(range(count)) + list(range(count - 2, -1, -1))
     raise ValueError(f"unknown variant {kind!r}; choose from {', '.join(KINDS)}")
 
 

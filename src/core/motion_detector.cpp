@@ -207,6 +207,7 @@ Detection MotionDetector::run_pass(double threshold, int min_area_px) {
     erode(work_, filter_tmp_, mask_);
     int described = 0;
     const int count = find_regions(mask_, fill_stack_, min_area_px, regions_, described);
+    described_ = described;
     Detection pass = describe_largest(regions_, described, count);
     pass.threshold = threshold;
     return pass;
@@ -238,6 +239,7 @@ Detection MotionDetector::detect(const GreyImage& previous, const GreyImage& cur
         if (next == threshold_) break;  // pinned at a bound: another pass would repeat this one
         threshold_ = next;
     }
+    described_ = 0;  // a rejected pass's regions are not what was found
     return result;
 }
 

@@ -42,6 +42,17 @@ public:
 
     double threshold() const { return threshold_; }  // the adapted threshold, kept between frames
 
+    // Whether `in(centre)` holds for the centroid of any region the last detect() found, not only of
+    // those it chose (the largest and the regions next to it): a slow mover beside a bigger one.
+    template <class In>
+    bool any_region(In in) const {
+        for (int i = 0; i < described_; ++i) {
+            const Region& r = regions_[static_cast<std::size_t>(i)];
+            if (in(Point{static_cast<double>(r.sum_x) / r.area, static_cast<double>(r.sum_y) / r.area})) return true;
+        }
+        return false;
+    }
+
 private:
     using Mask = Plane<std::uint8_t>;  // 1 where the grey value changed
     static constexpr int kMaxRegions = 64;  // regions described per pass; more only get counted
@@ -54,6 +65,7 @@ private:
 
     Plane<float> difference_, smoothed_difference_;
     std::array<Region, kMaxRegions> regions_{};
+    int described_ = 0;  // of regions_, those the last pass found
     Mask mask_;
     Mask work_;
     Mask filter_tmp_;

@@ -30,13 +30,14 @@ bool StillTrackWatch::stands_still(Point at, const ViewShift& view) {
     return still_frames_ >= kStillFrames && view.still;
 }
 
-bool StillTrackWatch::on_mover(const Detection& detection, const Contour& contour) {
+bool StillTrackWatch::on_mover(const Detection& detection, const Contour& contour, const MotionDetector& detector) {
     if (!detection.found) return true;
     // In it: inside the contour, or as near its centroid as its equivalent radius (a faint mover's
     // difference may show only where it was, just behind its rim).
     const Point c = contour.centroid;
     const double reach = std::sqrt(std::max(contour.area, 0.0) / std::numbers::pi);
-    if (contour_contains(contour, detection.centre) || std::hypot(detection.centre.x - c.x, detection.centre.y - c.y) <= reach) {
+    auto in_track = [&](Point p) { return contour_contains(contour, p) || std::hypot(p.x - c.x, p.y - c.y) <= reach; };
+    if (in_track(detection.centre) || detector.any_region(in_track)) {
         ++motion_inside_;
         return true;
     }

@@ -29,8 +29,9 @@ public:
 
     // The detector's answer for this frame (`stands_still` was true): false when motion has been
     // found away from `contour` often enough, and more often than in it, that the track is not on
-    // the mover.
-    bool on_mover(const Detection& detection, const Contour& contour);
+    // the mover. Motion counts as in it where the detector's mover is, or where any other region it
+    // found is: a slow target's own motion, which a bigger mover elsewhere outweighs.
+    bool on_mover(const Detection& detection, const Contour& contour, const MotionDetector& detector);
 
 private:
     int still_frames_ = -1;   // frames the track has stood still in the scene near still_at_ (-1: a new track)

@@ -530,7 +530,7 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     const ViewShift& view = view_motion_.since_previous();
     if (!still_watch_.stands_still(contour_.centroid, view)) return true;
     result_.detection = detector_.detect(aligned_previous(view.drift), frame, tunables_.detect);
-    return still_watch_.on_mover(result_.detection, contour_);
+    return still_watch_.on_mover(result_.detection, contour_, detector_);
 }
 
 const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma, TimePoint deadline) {

@@ -201,6 +201,28 @@ TEST_CASE("Of two distant moving objects the larger is chosen", "[motion_detecto
     CHECK(d.y1 < 70);
 }
 
+TEST_CASE("Every region found is asked about, the smaller mover the detection left out too", "[motion_detector]") {
+    GreyImage previous = blank(), current = blank();
+    draw_textured_disc(previous, 96, 90, 8, 11);
+    draw_textured_disc(current, 96, 94, 8, 11);
+    draw_textured_disc(previous, 38, 40, 16, 12);
+    draw_textured_disc(current, 42, 40, 16, 12);
+    add_noise(previous, 2.0, 5);
+    add_noise(current, 2.0, 6);
+    MotionDetector detector;
+    const Detection d = detector.detect(previous, current, DetectTunables{});
+    REQUIRE(d.found);
+    REQUIRE(distance(d.centre, 40.0, 40.0) < 3.0);  // the larger mover is the detection
+    auto near = [](double x, double y) { return [x, y](rays::Point p) { return distance(p, x, y) < 4.0; }; };
+    CHECK(detector.any_region(near(96.0, 92.0)));  // the smaller one, left out of it, is asked about too
+    CHECK(detector.any_region(near(40.0, 40.0)));
+    CHECK_FALSE(detector.any_region(near(96.0, 40.0)));  // where nothing moved
+    // Frames without motion: nothing found, no region to ask about.
+    const GreyImage still = blank();
+    REQUIRE_FALSE(detector.detect(still, still, DetectTunables{}).found);
+    CHECK_FALSE(detector.any_region([](rays::Point) { return true; }));
+}
+
 TEST_CASE("Regions within 6 px of the growing box of the largest are merged and measured exactly",
           "[motion_detector]") {
     // Step changes of 180 grey levels; with no noise the threshold falls to threshold_min = 6 < 180/16,

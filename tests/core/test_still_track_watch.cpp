@@ -46,6 +46,9 @@ Detection motion_at(Point p) {
     return d;
 }
 
+// A detector that has found nothing: the motion is the Detection a test gives, and nothing else.
+const rays::MotionDetector kNothingElse;
+
 // Frames until the watch first asks the detector, for a track held at `at` on `view` (0: never in 40).
 int frames_until_asked(StillTrackWatch& watch, Point at, const ViewShift& view) {
     for (int frame = 1; frame <= 40; ++frame)
@@ -65,10 +68,10 @@ TEST_CASE("StillTrackWatch: motion away from a still track five times, and not i
     const Contour contour = disc();
     REQUIRE(frames_until_asked(watch, kAt, still_view()) == 9);
     for (int k = 1; k < 5; ++k) {
-        CHECK(watch.on_mover(motion_at({110.0, 20.0}), contour));
+        CHECK(watch.on_mover(motion_at({110.0, 20.0}), contour, kNothingElse));
         REQUIRE(watch.stands_still(kAt, still_view()));
     }
-    CHECK_FALSE(watch.on_mover(motion_at({110.0, 20.0}), contour));
+    CHECK_FALSE(watch.on_mover(motion_at({110.0, 20.0}), contour, kNothingElse));
 }
 
 TEST_CASE("StillTrackWatch: motion in the track as often as away keeps it", "[still_watch]") {
@@ -77,15 +80,15 @@ TEST_CASE("StillTrackWatch: motion in the track as often as away keeps it", "[st
     REQUIRE(frames_until_asked(watch, kAt, still_view()) == 9);
     // Motion found in the contour three times ...
     for (int k = 0; k < 3; ++k) {
-        CHECK(watch.on_mover(motion_at({kAt.x + 3.0, kAt.y}), contour));
+        CHECK(watch.on_mover(motion_at({kAt.x + 3.0, kAt.y}), contour, kNothingElse));
         REQUIRE(watch.stands_still(kAt, still_view()));
     }
     for (int k = 0; k < 6; ++k) {
-        CHECK(watch.on_mover(motion_at({110.0, 20.0}), contour));  // 6 away ≤ twice 3 in it
+        CHECK(watch.on_mover(motion_at({110.0, 20.0}), contour, kNothingElse));  // 6 away ≤ twice 3 in it
         REQUIRE(watch.stands_still(kAt, still_view()));
     }
-    CHECK_FALSE(watch.on_mover(motion_at({110.0, 20.0}), contour));  // 7 away > twice 3
-    CHECK(watch.on_mover(Detection{}, contour));  // no motion found: no evidence either way
+    CHECK_FALSE(watch.on_mover(motion_at({110.0, 20.0}), contour, kNothingElse));  // 7 away > twice 3
+    CHECK(watch.on_mover(Detection{}, contour, kNothingElse));  // no motion found: no evidence either way
 }
 
 TEST_CASE("StillTrackWatch: no watch while the view moves, or once the track moves on", "[still_watch]") {
@@ -124,4 +127,41 @@ TEST_CASE("StillTrackWatch: a track held still in the image while the view drift
         at.x += 1.0;
     }
     CHECK(asked);
+}
+
+TEST_CASE("StillTrackWatch: a slow mover's own motion in the track keeps it, though a bigger mover away is the detection",
+          "[still_watch]") {
+    // The track is a small disc moving 1 px a frame (still in the scene by the watch's measure); a
+    // bigger disc far away moves 4 px a frame, and the detector's detection is the bigger one.
+    auto frame = [](int k) {
+        rays::GreyImage image;
+        image.px.fill(20);
+        for (int y = 0; y < rays::kFrameSize; ++y)
+            for (int x = 0; x < rays::kFrameSize; ++x) {
+                if (std::hypot(x - (kAt.x + k), y - kAt.y) <= 7.0) image.at(x, y) = 120;
+                if (std::hypot(x - (20.0 + 4 * k), y - 20.0) <= 14.0) image.at(x, y) = 200;
+            }
+        return image;
+    };
+    rays::MotionDetector detector;
+    StillTrackWatch watch;
+    const Contour contour = disc();
+    REQUIRE(frames_until_asked(watch, kAt, still_view()) == 9);
+    for (int k = 1; k <= 8; ++k) {
+        const Detection d = detector.detect(frame(k - 1), frame(k), rays::DetectTunables{});
+        REQUIRE(d.found);
+        REQUIRE(std::hypot(d.centre.x - kAt.x, d.centre.y - kAt.y) > 30.0);  // the bigger mover, away
+        CHECK(watch.on_mover(d, contour, detector));
+        REQUIRE(watch.stands_still(kAt, still_view()));
+    }
+    // The same detections without the small disc's own motion drop the track at the fifth.
+    StillTrackWatch without;
+    REQUIRE(frames_until_asked(without, kAt, still_view()) == 9);
+    int dropped_at = 0;
+    for (int k = 1; k <= 8 && dropped_at == 0; ++k) {
+        const Detection d = detector.detect(frame(k - 1), frame(k), rays::DetectTunables{});
+        if (!without.on_mover(d, contour, kNothingElse)) dropped_at = k;
+        REQUIRE(without.stands_still(kAt, still_view()));
+    }
+    CHECK(dropped_at == 5);
 }

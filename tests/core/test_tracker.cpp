@@ -336,6 +336,58 @@ TEST_CASE("Tracker keeps a target that stopped while nothing else moves", "[trac
     CHECK(on_a >= 150);
 }
 
+namespace {
+
+// As TwoDiscs, drawn to a fraction of a pixel (a disc's rim pixels are mixed by how much of them it
+// covers, as a camera's would be): A walks right at 1.5 px/frame until frame 40, then creeps on at
+// `creep` px/frame; B, bigger, stands until frame 40, then walks right at 2.5 px/frame.
+struct CreeperAndWalker {
+    explicit CreeperAndWalker(double creep_px) : creep(creep_px) {}
+    double creep;
+    SteadyClock clock;
+    Tracker tracker{TrackerConfig{}, clock};
+    rays::GreyImage image;
+
+    double a_x(int index) const { return 20.0 + 1.5 * std::min(index, 40) + creep * std::max(0, index - 40); }
+    double b_x(int index) const { return 20.0 + 2.5 * std::max(0, index - 40); }
+
+    TrackState step(int index) {
+        for (int y = 0; y < rays::kFrameSize; ++y)
+            for (int x = 0; x < rays::kFrameSize; ++x) {
+                const double plain = 150.0 + 10.0 * std::sin(0.3 * x) * std::cos(0.25 * y);
+                const double a = std::clamp(9.5 - std::hypot(x - a_x(index), y - 36.0), 0.0, 1.0);
+                const double b = std::clamp(12.5 - std::hypot(x - b_x(index), y - 96.0), 0.0, 1.0);
+                const double cover = std::max(a, b);
+                image.at(x, y) = static_cast<std::uint8_t>(std::lround(plain + cover * (60.0 - plain)));
+            }
+        return tracker.process(image, rays::TimePoint::max()).state;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("Tracker keeps a target creeping slower than the watch calls still while a bigger one walks away",
+          "[tracker]") {
+    // A creeps 0.3 px a frame (6 px in 20 frames: still, by the watch's measure) while B is the
+    // detector's mover; A's own motion, found in its track, keeps it.
+    CreeperAndWalker run(0.3);
+    int i = 0;
+    for (; i < 40; ++i) run.step(i);
+    const Point c = run.tracker.contour().centroid;
+    REQUIRE(run.tracker.state() == TrackState::Tracking);
+    REQUIRE(std::hypot(c.x - run.a_x(39), c.y - 36.0) < 2.0);
+    int on_a = 0;
+    for (; i < 100; ++i) {
+        const TrackState s = run.step(i);
+        const char* reason = run.tracker.result().lost_reason;
+        INFO("frame " << i << ": " << (reason ? reason : "tracking"));
+        CHECK(s == TrackState::Tracking);
+        const Point at = run.tracker.contour().centroid;
+        if (s == TrackState::Tracking && std::hypot(at.x - run.a_x(i), at.y - 36.0) < 2.0) ++on_a;
+    }
+    CHECK(on_a >= 58);
+}
+
 TEST_CASE("Tracker keeps a start point given from outside on something still while another moves", "[tracker]") {
     TwoDiscs run(0, 0);  // A never moves, B walks from the start
     run.step(0);

@@ -131,8 +131,8 @@ TEST_CASE("StillTrackWatch: a track held still in the image while the view drift
 
 TEST_CASE("StillTrackWatch: a slow mover's own motion in the track keeps it, though a bigger mover away is the detection",
           "[still_watch]") {
-    // The track is a small disc moving 1 px a frame (still in the scene by the watch's measure); a
-    // bigger disc far away moves 4 px a frame, and the detector's detection is the bigger one.
+    // The track stands at kAt, as a slow mover's does, on a small disc whose rim moves 1 px a frame;
+    // a bigger disc far away moves 4 px a frame, and the detector's detection is the bigger one.
     auto frame = [](int k) {
         rays::GreyImage image;
         image.px.fill(20);

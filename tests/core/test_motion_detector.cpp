@@ -186,12 +186,21 @@ TEST_CASE("The two edge strips of a wide uniform object are one object beyond th
     }
 }
 
-TEST_CASE("Of two distant moving objects the larger is chosen", "[motion_detector]") {
-    GreyImage previous = blank(), current = blank();
+namespace {
+
+// Two textured movers far apart: a small disc at (96, 90 → 94) and one twice its radius at (38 → 42, 40).
+void draw_two_movers(GreyImage& previous, GreyImage& current) {
     draw_textured_disc(previous, 96, 90, 8, 11);
     draw_textured_disc(current, 96, 94, 8, 11);
     draw_textured_disc(previous, 38, 40, 16, 12);
     draw_textured_disc(current, 42, 40, 16, 12);
+}
+
+}  // namespace
+
+TEST_CASE("Of two distant moving objects the larger is chosen", "[motion_detector]") {
+    GreyImage previous = blank(), current = blank();
+    draw_two_movers(previous, current);
     const Detection d = detect_with_noise(previous, current, 2.0, 5);
 
     REQUIRE(d.found);
@@ -203,10 +212,7 @@ TEST_CASE("Of two distant moving objects the larger is chosen", "[motion_detecto
 
 TEST_CASE("Every region found is asked about, the smaller mover the detection left out too", "[motion_detector]") {
     GreyImage previous = blank(), current = blank();
-    draw_textured_disc(previous, 96, 90, 8, 11);
-    draw_textured_disc(current, 96, 94, 8, 11);
-    draw_textured_disc(previous, 38, 40, 16, 12);
-    draw_textured_disc(current, 42, 40, 16, 12);
+    draw_two_movers(previous, current);
     add_noise(previous, 2.0, 5);
     add_noise(current, 2.0, 6);
     MotionDetector detector;

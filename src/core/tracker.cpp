@@ -466,9 +466,10 @@ bool Tracker::look_again(TimePoint deadline) {
     const FilterMatch near = filter_.locate(smoothed_, *chroma_, last_seen_);
     result_.match_psr = near.psr;
     if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline)) return true;
-    // ... then anywhere in the frame, where a match must be about as clear as the target's were.
+    // ... then anywhere in the frame it can have reached, where a match must be about as clear as the
+    // target's were.
     const FilterMatch found = search_frame();
-    if (found.psr < std::max(kConfidentPsr, kRedetectShare * psr_tracked_)) return false;
+    if (found.psr < std::max(kConfidentPsr, kRedetectShare * psr_tracked_) || !within_reach(found.at, last_radius)) return false;
     const FilterMatch match = filter_.locate(smoothed_, *chroma_, found.at);  // centred on it: learned from there
     result_.match_psr = match.psr;
     return match.psr >= kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
@@ -486,6 +487,11 @@ const GreyImage& Tracker::aligned_previous(Point shift) {
                                              : static_cast<std::uint8_t>(std::lround(sample_bilinear(previous_, px, py)));
         }
     return aligned_previous_;
+}
+
+bool Tracker::within_reach(Point p, double radius) const {
+    const double reach = radius + tunables_.attention.max_jump_px * (untracked_frames_ + 1);
+    return std::hypot(p.x - last_seen_.x, p.y - last_seen_.y) <= reach;
 }
 
 FilterMatch Tracker::search_frame() {

@@ -72,9 +72,12 @@ private:
     bool begin_detected(const Detection& d, TimePoint deadline);
     bool reacquire_afresh(Point m, double radius, TimePoint deadline);
     // After a loss, the filter looks for the target's looks round where it was last seen, then over
-    // the whole frame: true, and the track resumes, where it finds them surely and a contour round
-    // them passes the attention check, at most reacquire_bound().
+    // the whole frame, as far as within_reach(): true, and the track resumes, where it finds them
+    // surely and a contour round them passes the attention check, at most reacquire_bound().
     bool look_again(TimePoint deadline);
+    // Whether the lost target can have reached `p` by now: at most its radius plus the attention
+    // module's largest step (attention.max_jump_px) for each frame since it was last seen.
+    bool within_reach(Point p, double radius) const;
     // The best match in the next kSearchWindows windows of a sweep over the frame on a grid of half
     // the filter's window (the sweep goes on in the next frame where this one stopped).
     FilterMatch search_frame();

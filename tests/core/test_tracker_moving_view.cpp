@@ -5,6 +5,7 @@
 // wherever it is in the frame, and on a grey source what moves with the view is not the target.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <numbers>
 
 #include "core/tracker.hpp"
@@ -211,4 +212,32 @@ TEST_CASE("Tracker on a grey source keeps the whole target while a fast unit swi
     INFO("IoU with the layers " << with << ", without " << without);
     CHECK(with > 0.93);  // 0.95 when written; 0.90 with the map read at the smoothed velocity
     CHECK(with > without - 0.05);  // 0.99 without the layers
+}
+
+TEST_CASE("Tracker takes up no look-alike farther than the lost target can have gone", "[tracker][view]") {
+    // While the target is covered (and the caller allows no differencing), a twin with its looks
+    // shows 110 px away, where the whole-frame search finds it clearly within a frame or two. A target
+    // steps at most attention.max_jump_px a frame: that far needs five frames or more, and it is
+    // back where it was covered after four.
+    PanningScene run;
+    const Point start{20.0, 100.0};
+    REQUIRE(run.tracker.start_in({start.x - PanningScene::kA, start.y - PanningScene::kB, 2 * PanningScene::kA + 1,
+                                  2 * PanningScene::kB + 1}));
+    Point target = start;
+    for (int i = 0; i < 15; ++i) {
+        target = {start.x + 0.5 * i, start.y};
+        REQUIRE(run.step({0.0, 0.0}, target) == TrackState::Tracking);
+    }
+    run.turning = true;
+    run.twin = Point{96.0, 32.0 / 3.0};  // the middle of one of the search's windows
+    REQUIRE(std::hypot(run.twin->x - target.x, run.twin->y - target.y) > 5 * rays::AttentionTunables{}.max_jump_px);
+    for (int i = 0; i < 4; ++i) {
+        INFO("covered, frame " << i);
+        CHECK(run.step({0.0, 0.0}, target, true) != TrackState::Tracking);
+    }
+    for (int i = 0; i < 8; ++i) {
+        INFO("back, frame " << i);
+        REQUIRE(run.step({0.0, 0.0}, target) == TrackState::Tracking);
+        CHECK(run.on_target());
+    }
 }

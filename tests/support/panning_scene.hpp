@@ -24,6 +24,7 @@ struct PanningScene {
     double size = 1.0;  // the target's size, as a share of kA, kB
     bool poles = false;  // dark poles 2 kPoleHalfWidth px wide stand in the world every kPoleEvery px: edges that show any drift
     bool block = false;  // a dark block stands in the world at kBlock (x0, y0, x1, y1), as grey as the target
+    std::optional<Point> twin;  // a look-alike centred here in the view: the target's size and texture, not its mask
     // The caller tells the tracker the unit turns (allow_detection(false)) and how far that moved the
     // view since the previous frame (expect_view_shift), as the daemon does.
     bool turning = false;
@@ -42,11 +43,15 @@ struct PanningScene {
             for (int x = 0; x < kFrameSize; ++x) {
                 const double u = (x - target.x) / (size * kA), v = (y - target.y) / (size * kB);
                 const bool on = !hidden && u * u + v * v <= 1.0;
+                const Point twin_at = twin.value_or(Point{-1e3, -1e3});
+                const double tu = (x - twin_at.x) / (size * kA), tv = (y - twin_at.y) / (size * kB);
+                const bool on_twin = !on && tu * tu + tv * tv <= 1.0;
                 const double world_x = x + pan.x, world_y = y + pan.y;
                 const double pole = world_x - kPoleEvery * std::floor(world_x / kPoleEvery);  // 0 … kPoleEvery
                 const double dark = poles ? std::clamp(kPoleHalfWidth + 0.5 - std::abs(pole - kPoleHalfWidth), 0.0, 1.0) : 0.0;
                 const bool in_block = block && world_x >= kBlock[0] && world_x <= kBlock[2] && world_y >= kBlock[1] && world_y <= kBlock[3];
                 const double grey = on         ? smooth_blocks(x - target.x, y - target.y, 7u, 4.0, 20, 50)
+                                    : on_twin  ? smooth_blocks(x - twin_at.x, y - twin_at.y, 7u, 4.0, 20, 50)
                                     : in_block ? smooth_blocks(world_x, world_y, 3u, 4.0, 20, 50)
                                                : (1.0 - dark) * smooth_blocks(world_x, world_y, 1u, 6.0, 100, 130) + dark * 25.0;
                 frame->image.at(x, y) = static_cast<std::uint8_t>(std::lround(grey));

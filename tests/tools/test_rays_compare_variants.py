@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """rays-compare's variants (tools/rays_compare/variants.py) of a sequence this test writes: played
-backwards, at every 2nd frame, without its chroma and to its end and back, the ground truth moved with
-the frames, the reversed start at the last frame's mask's deepest point; and the tool running them
+backwards, at every 2nd frame, without its chroma, to its end and back and mirrored, the ground truth
+moved with the frames, the reversed start at the last frame's mask's deepest point; and the tool running them
 (--variants) beside the folder itself.
 
 usage: test_rays_compare_variants.py REPO_DIR RAYS_REPLAY
@@ -93,6 +93,29 @@ bmeta = json.load(open(os.path.join(back, "meta.json")))
 check("there-and-back: the sequence's own start, 13 frames", bmeta["init"] == meta["init"] and
       bmeta["init_box"] == meta["init_box"] and bmeta["frames"] == 13 and bmeta["name"] == "disc-there-and-back")
 
+mir = variants.derive(seq, "mirrored", os.path.join(work, "variants"))
+mv = y4m.read(os.path.join(mir, "seq.y4m"))
+check("mirrored: the same frames in order, each row reversed",
+      len(mv.frames) == 7 and all(mv.frames[i][0][fx.W - 1] == i for i in range(7))
+      and mv.frames[3][0][40 * fx.W + 5] == video.frames[3][0][40 * fx.W + fx.W - 1 - 5], f"{len(mv.frames)} frames")
+cw = mv.chroma_size[0]
+check("mirrored: the chroma rows reversed with their luma",
+      mv.colour == video.colour and mv.frames[2][1][10 * cw + 3] == video.frames[2][1][10 * cw + cw - 1 - 3]
+      and mv.frames[2][2][30 * cw] == video.frames[2][2][30 * cw + cw - 1])
+mmasks = y4m.read(os.path.join(mir, "masks.y4m"))
+# Frame 6's disc is centred at x = 52, so the mirrored one at 127 - 52 = 75.
+check("mirrored: the masks mirrored", mmasks.frames[6][0][60 * fx.W + 75] == 255 and mmasks.frames[6][0][60 * fx.W + 52] == 0
+      and mmasks.frames[6][0][60 * fx.W + 75 + 12] == 255 and mmasks.frames[6][0][60 * fx.W + 75 + 13] == 0)
+mboxes = score.load_truth(mir).boxes
+check("mirrored: frame k's box is frame k's mirrored about x = 63.5",
+      all(mboxes[k] == (fx.W - 1 - boxes[k][2], boxes[k][1], fx.W - 1 - boxes[k][0], boxes[k][3]) for k in range(7)),
+      f"{mboxes[6]} against {boxes[6]}")
+mmeta = json.load(open(os.path.join(mir, "meta.json")))
+check("mirrored: the start mirrored (the disc's centre and its box)",
+      mmeta["init"] == [fx.W - 1 - meta["init"][0], meta["init"][1]]
+      and mmeta["init_box"] == [mboxes[0][0], mboxes[0][1], mboxes[0][2] - mboxes[0][0], mboxes[0][3] - mboxes[0][1]]
+      and mmeta["name"] == "disc-mirrored", f"{mmeta['init']}, {mmeta['init_box']}")
+
 os.remove(os.path.join(seq, "boxes.csv"))
 try:
     variants.derive(seq, "reversed", os.path.join(work, "none"))
@@ -113,9 +136,9 @@ check("without boxes.csv: the folder compared, the reversed variant a failed row
 fx.write_sequence(seq, frames, [(f[1], f[2]) for f in video.frames],
                   [m[0] for m in y4m.read(os.path.join(seq, "masks.y4m")).frames], boxes, meta)
 
-# The tool: the folder and its four variants, each scored (the disc is easy: tracked in every frame).
+# The tool: the folder and its five variants, each scored (the disc is easy: tracked in every frame).
 p = subprocess.run([sys.executable, os.path.join(REPO, "tools", "rays-compare"), "--rays-replay", RAYS_REPLAY,
-                    "--trackers", "rays-point", "--variants", "reversed,every-2nd,grey,there-and-back", "--json", seq],
+                    "--trackers", "rays-point", "--variants", "reversed,every-2nd,grey,there-and-back,mirrored", "--json", seq],
                    capture_output=True, text=True)
 check("rays-compare --variants exits 0", p.returncode == 0, "" if p.returncode == 0 else p.stderr.strip()[-300:])
 try:
@@ -123,8 +146,8 @@ try:
 except ValueError:
     rows = []
 by_name = {row["sequence"]: row for row in rows}
-check("rows for the folder and its four variants",
-      sorted(by_name) == ["disc", "disc-every-2nd", "disc-grey", "disc-reversed", "disc-there-and-back"],
+check("rows for the folder and its five variants",
+      sorted(by_name) == ["disc", "disc-every-2nd", "disc-grey", "disc-mirrored", "disc-reversed", "disc-there-and-back"],
       f"{sorted(by_name)}")
 for name, row in sorted(by_name.items()):
     check(f"{name}: the disc's centre in its box in every frame", row.get("centre_in_box") == 1.0,

@@ -62,8 +62,9 @@ Trackers (--trackers):
 With --variants, each folder is also compared as it is played backwards (NAME-reversed: started from
 its last frame, "init" at that frame's mask's deepest point, or its box's centre) and at every 2nd frame
 (NAME-every-2nd: twice the motion per frame), the ground truth moved with the frames, and without its
-chroma (NAME-grey: what a mono camera gives), and played to its end and back (NAME-there-and-back:
-twice as long, the target turning back where the footage ends). They are written under --work, or a
+chroma (NAME-grey: what a mono camera gives), played to its end and back (NAME-there-and-back:
+twice as long, the target turning back where the footage ends), and flipped left to right
+(NAME-mirrored: the same motion the other way round). They are written under --work, or a
 temporary folder (tools/rays_compare/variants.py): a change tuned to the footage as it was recorded
 shows there.
 

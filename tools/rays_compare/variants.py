@@ -14,6 +14,9 @@ footage it was measured on (rays-compare --variants):
              footage ends and retraces its path (a walker who turns back while others go on); the
              models learned on the way out meet the target again as it looked at the start; the
              start is the sequence's own
+  mirrored   every frame flipped left to right (x -> width - 1 - x, pixel centres at integers): the
+             same motion the other way round, which a tracker with no preferred side follows as well;
+             the start is the sequence's own, mirrored
 
 Pure Python, as the rest of rays-compare. The ground truth (boxes.csv, masks.y4m) moves with the frames.
 """
@@ -22,7 +25,7 @@ import os
 
 from . import score, y4m
 
-KINDS = ("reversed", "every-2nd", "grey", "there-and-back")
+KINDS = ("reversed", "every-2nd", "grey", "there-and-back", "mirrored")
 
 
 def frame_order(kind, count):
@@ -30,7 +33,7 @@ def frame_order(kind, count):
         return list(range(count - 1, -1, -1))
     if kind == "every-2nd":
         return list(range(0, count, 2))
-    if kind == "grey":
+    if kind in ("grey", "mirrored"):
         return list(range(count))
     if kind == "there-and-back":
         return list(range(count)) + list(range(count - 2, -1, -1))
@@ -72,6 +75,15 @@ def deepest_point(plane, width, height):
     return None if d[best] == 0 else (best % width, best // width)
 
 
+def mirror_rows(plane, width):
+    """A row-major plane (bytes) with each row's samples in reverse order."""
+    return b"".join(bytes(plane[i:i + width])[::-1] for i in range(0, len(plane), width))
+
+
+def mirror_frame(frame, width, chroma_width):
+    return tuple(mirror_rows(p, width if k == 0 else chroma_width) for k, p in enumerate(frame))
+
+
 def derive(seq, kind, out_root):
     """Writes the `kind` variant of sequence folder `seq` as out_root/NAME-KIND and returns that folder.
     The reversed variant needs boxes.csv (its start is the last frame's)."""
@@ -89,17 +101,29 @@ def derive(seq, kind, out_root):
     os.makedirs(out, exist_ok=True)
     fps = (video.fps[0], video.fps[1] * 2) if kind == "every-2nd" else video.fps
     grey = kind == "grey"  # the luma plane alone
-    y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height,
-              [video.frames[i][:1] if grey else video.frames[i] for i in order], "mono" if grey else video.colour, fps)
+    mirrored = kind == "mirrored"
+    chroma_width = video.chroma_size[0]
+
+    def frame_of(i):
+        if grey:
+            return video.frames[i][:1]
+        return mirror_frame(video.frames[i], video.width, chroma_width) if mirrored else video.frames[i]
+
+    y4m.write(os.path.join(out, "seq.y4m"), video.width, video.height, [frame_of(i) for i in order],
+              "mono" if grey else video.colour, fps)
     if masks is not None:
         y4m.write(os.path.join(out, "masks.y4m"), truth.width, truth.height,
-                  [(masks[i],) for i in order if i < len(masks)], "mono", fps)
+                  [(mirror_rows(masks[i], truth.width) if mirrored else masks[i],) for i in order if i < len(masks)],
+                  "mono", fps)
+    right = video.width - 1  # x -> right - x mirrors the sequence's pixels (centres at integers)
     if boxes is not None:
         with open(os.path.join(out, "boxes.csv"), "w") as f:
             f.write("frame,x0,y0,x1,y1\n")
             for k, i in enumerate(order):
                 if i in boxes:
-                    f.write(f"{k}," + ",".join(f"{v:.3f}" for v in boxes[i]) + "\n")
+                    x0, y0, x1, y1 = boxes[i]
+                    box = (right - x1, y0, right - x0, y1) if mirrored else boxes[i]
+                    f.write(f"{k}," + ",".join(f"{v:.3f}" for v in box) + "\n")
 
     derived = dict(meta, name=f"{name}-{kind}", frames=len(order), derived_from=name, variant=kind)
     if "fps" in meta and kind == "every-2nd":
@@ -114,6 +138,12 @@ def derive(seq, kind, out_root):
             sx, sy = video.width / truth.width, video.height / truth.height
             point = ((point[0] + 0.5) * sx - 0.5, (point[1] + 0.5) * sy - 0.5)
         derived["init"] = list(point) if point else [(x0 + x1) / 2, (y0 + y1) / 2]
+    if mirrored:
+        if "init_box" in meta:
+            x, y, w, h = meta["init_box"]
+            derived["init_box"] = [right - (x + w), y, w, h]
+        if "init" in meta:
+            derived["init"] = [right - meta["init"][0], meta["init"][1]]
     with open(os.path.join(out, "meta.json"), "w") as f:
         json.dump(derived, f, indent=1)
     return out

@@ -42,8 +42,7 @@ TEST_CASE("Tracker detects a mover while the view pans, on frames aligned by the
 TEST_CASE("Tracker finds a target lost while the camera turned by its looks, anywhere in the frame", "[tracker][view]") {
     PanningScene run;
     const Point start{40.0, 64.0};
-    REQUIRE(run.tracker.start_in({start.x - PanningScene::kA, start.y - PanningScene::kB, 2 * PanningScene::kA + 1,
-                                  2 * PanningScene::kB + 1}));
+    REQUIRE(run.tracker.start_in(PanningScene::box_at(start)));
     Point target = start;
     for (int i = 0; i < 15; ++i) {
         target = {start.x + 0.5 * i, start.y};
@@ -86,8 +85,7 @@ TEST_CASE("Tracker says how surely it finds the target's looks: sure while seen,
     // 0 with the track lost, once something hides it.
     PanningScene run;
     const Point start{40.0, 64.0};
-    REQUIRE(run.tracker.start_in({start.x - PanningScene::kA, start.y - PanningScene::kB, 2 * PanningScene::kA + 1,
-                                  2 * PanningScene::kB + 1}));
+    REQUIRE(run.tracker.start_in(PanningScene::box_at(start)));
     REQUIRE(run.step({0.0, 0.0}, start) == TrackState::Tracking);
     CHECK(run.tracker.result().match_psr == 0.0);
     Point target = start;
@@ -112,8 +110,7 @@ TEST_CASE("Tracker finds a target again by its looks in the frame its contour fa
     // reports why the track was lost.
     PanningScene run;
     const Point start{40.0, 64.0};
-    REQUIRE(run.tracker.start_in({start.x - PanningScene::kA, start.y - PanningScene::kB, 2 * PanningScene::kA + 1,
-                                  2 * PanningScene::kB + 1}));
+    REQUIRE(run.tracker.start_in(PanningScene::box_at(start)));
     for (int i = 0; i < 25; ++i) {
         if (i == 15) run.size = 0.69;
         const Point target{start.x + 0.5 * i, start.y};
@@ -221,8 +218,7 @@ TEST_CASE("Tracker takes up no look-alike farther than the lost target can have 
     // back where it was covered after four.
     PanningScene run;
     const Point start{20.0, 100.0};
-    REQUIRE(run.tracker.start_in({start.x - PanningScene::kA, start.y - PanningScene::kB, 2 * PanningScene::kA + 1,
-                                  2 * PanningScene::kB + 1}));
+    REQUIRE(run.tracker.start_in(PanningScene::box_at(start)));
     Point target = start;
     for (int i = 0; i < 15; ++i) {
         target = {start.x + 0.5 * i, start.y};

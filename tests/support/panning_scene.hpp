@@ -65,6 +65,9 @@ struct PanningScene {
         return tracker.process(frame->image, TimePoint::max()).state;
     }
 
+    // The target's box (at size 1) centred at `centre` in the view, as a person draws it to start.
+    static Box box_at(Point centre) { return {centre.x - kA, centre.y - kB, 2 * kA + 1, 2 * kB + 1}; }
+
     // The contour's intersection over union with the target's mask.
     double contour_iou() const {
         std::vector<Point> polygon;

@@ -39,11 +39,11 @@ struct PanningScene {
     // Draws the view from `pan` (the view at x shows the world at x + pan) with the target centred
     // at `target` in the view (none when `hidden`), and tracks it.
     TrackState step(Point pan, Point target, bool hidden = false) {
+        const Point twin_at = twin.value_or(Point{-1e3, -1e3});  // none: far off the view
         for (int y = 0; y < kFrameSize; ++y)
             for (int x = 0; x < kFrameSize; ++x) {
                 const double u = (x - target.x) / (size * kA), v = (y - target.y) / (size * kB);
                 const bool on = !hidden && u * u + v * v <= 1.0;
-                const Point twin_at = twin.value_or(Point{-1e3, -1e3});
                 const double tu = (x - twin_at.x) / (size * kA), tv = (y - twin_at.y) / (size * kB);
                 const bool on_twin = !on && tu * tu + tv * tv <= 1.0;
                 const double world_x = x + pan.x, world_y = y + pan.y;

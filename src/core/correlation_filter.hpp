@@ -2,15 +2,15 @@
 // Finds the target by what it looks like, not by its edges: a multi-channel discriminative
 // correlation filter (MOSSE, Bolme et al., CVPR 2010, with the multi-channel closed form of DSST,
 // Danelljan et al., BMVC 2014) over a square window round the target, learned where the contour is.
-// Features per window sample: grey, unsigned gradient orientations (HOG-like, soft-binned without
-// cells) and, where the source has colour, Cb and Cr. The window's side follows the contour's size,
-// so the filter is learned and applied at the target's scale. The response's peak-to-sidelobe ratio
-// is the match's confidence. Fixed memory; the FFT's tables are made at construction, so locate() and
+// Its features (grey, gradient orientations, colour) are core/feature_window.hpp's. The window's side
+// follows the contour's size, so the filter is learned and applied at the target's scale. The
+// response's peak-to-sidelobe ratio is the match's confidence. Fixed memory; the FFT's tables are made at construction, so locate() and
 // learn() allocate nothing.
 #pragma once
 #include <array>
 #include <complex>
 
+#include "core/feature_window.hpp"
 #include "core/fft_columns.hpp"
 #include "core/image.hpp"
 
@@ -23,10 +23,10 @@ struct FilterMatch {
 
 class CorrelationFilter {
 public:
-    static constexpr int kSize = 32;  // window samples per side (a power of two: radix-2/4 FFTs)
-    static constexpr int kOrientations = 6;
-    static constexpr int kChannels = 1 + kOrientations + 2;  // grey, orientations, Cb, Cr
-    static constexpr int kPairs = (kChannels + 1) / 2;       // two real channels per complex FFT
+    static constexpr int kSize = FeatureWindow::kSize;
+    static constexpr int kOrientations = FeatureWindow::kOrientations;
+    static constexpr int kChannels = FeatureWindow::kChannels;
+    static constexpr int kPairs = FeatureWindow::kPairs;
     static constexpr double kPadding = 2.5;  // window side / target size (target and its surroundings)
 
     CorrelationFilter();
@@ -55,15 +55,12 @@ public:
 private:
     using Complex = std::complex<float>;
     static constexpr int kHalfColumns = kSize / 2 + 1;  // u = 0 … N/2: real features mirror the rest
-    using Spectrum = std::array<Complex, kSize * kSize>;
+    using Spectrum = FeatureWindow::Spectrum;
     using HalfSpectrum = std::array<Complex, kSize * kHalfColumns>;  // row v, column u ≤ N/2
     using Plane = std::array<float, kSize * kSize>;
 
     // The window's features at `centre`, transformed: features_[c] is channel c's half spectrum.
     void transform_window(const FloatImage& image, const Chroma& chroma, Point centre);
-    // The window's samples and, per sample, the channels' values, each pair of channels packed as one
-    // complex plane: pairs_[p] holds channels 2p (real) and 2p + 1 (imaginary).
-    void fill_pairs(const FloatImage& image, const Chroma& chroma, Point centre, int pairs);
     // Blends the transformed window into the filter with the wanted response G·ramp (the label
     // moved by the target's displacement in the window).
     void blend(double du, double dv, bool fresh, float rate);
@@ -71,6 +68,7 @@ private:
     // The real plane whose half spectrum is `half` (unscaled inverse).
     void inverse_real(const HalfSpectrum& half, Plane& out);
 
+    FeatureWindow window_;  // the window's features, pairs of channels packed into pairs_
     FftColumns fft_;
     Plane re_{}, im_{}, re_across_{}, im_across_{};  // the transforms' split planes, as laid out and transposed
     std::array<Spectrum, kPairs> pairs_{};
@@ -80,10 +78,6 @@ private:
     HalfSpectrum label_{};  // G: the Gaussian the response should be, peaked at displacement 0
     HalfSpectrum response_spectrum_{};
     Plane response_{};
-    std::array<float, kSize> hann_{};
-    std::array<float, kOrientations> cos2_{}, sin2_{};  // cos 2θ_k and sin 2θ_k of each orientation bin
-    Plane grey_{}, gx_{}, gy_{}, magnitude_{};  // the window's samples and their gradient
-    Plane cb_{}, cr_{};                         // ... and their colour (colour sources)
     std::array<Complex, kSize> ramp_u_{}, ramp_v_{};
     Point window_centre_;  // where the last transformed window was centred
     bool window_colour_ = false;  // ... and whether it had chroma channels

@@ -26,7 +26,6 @@ constexpr double kSeedRingTo = 3.0;      // ... to this many, mostly not
 constexpr double kBoxBand = 0.15;        // of a box's longer side: the band round it whose colours are background
 constexpr float kFilterRate = 0.02f;     // weight of the newest frame in the correlation filter (CSRT: 0.02)
 constexpr double kConfidentPsr = 5.0;    // a filter match this clear of its sidelobe says where the target is
-constexpr int kSearchWindows = 4;       // windows of the whole-frame search per frame (each a filter locate)
 constexpr double kRedetectShare = 0.5;  // of the target's mean PSR while tracked: what a match found
                                         // elsewhere in the frame must reach (a textured background
                                         // gives 5–8 here and there; real targets 9–48, median)
@@ -468,7 +467,7 @@ bool Tracker::look_again(TimePoint deadline) {
     if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline)) return true;
     // ... then anywhere in the frame it can have reached, where a match must be about as clear as the
     // target's were.
-    const FilterMatch found = search_frame();
+    const FilterMatch found = sweep_.next(filter_, smoothed_, *chroma_);
     if (found.psr < std::max(kConfidentPsr, kRedetectShare * psr_tracked_) || !within_reach(found.at, last_radius)) return false;
     const FilterMatch match = filter_.locate(smoothed_, *chroma_, found.at);  // centred on it: learned from there
     result_.match_psr = match.psr;
@@ -494,20 +493,6 @@ bool Tracker::within_reach(Point p, double radius) const {
     return std::hypot(p.x - last_seen_.x, p.y - last_seen_.y) <= reach;
 }
 
-FilterMatch Tracker::search_frame() {
-    const int per_axis = std::max(1, static_cast<int>(std::ceil(2.0 * kFrameSize / filter_.window_px())));
-    const double spacing = static_cast<double>(kFrameSize) / per_axis;
-    FilterMatch best;
-    for (int k = 0; k < kSearchWindows; ++k) {
-        const int window = search_cursor_++ % (per_axis * per_axis);
-        const Point centre{(window % per_axis + 0.5) * spacing, (window / per_axis + 0.5) * spacing};
-        const FilterMatch m = filter_.locate(smoothed_, *chroma_, centre);
-        if (m.psr > best.psr) best = m;
-    }
-    search_cursor_ %= per_axis * per_axis;
-    return best;
-}
-
 void Tracker::follow(Point last) {
     const Point moved{contour_.centroid.x - last.x, contour_.centroid.y - last.y};
     velocity_ = {velocity_.x + kVelocityRate * (moved.x - velocity_.x), velocity_.y + kVelocityRate * (moved.y - velocity_.y)};
@@ -523,7 +508,7 @@ const char* Tracker::check_contour(Point predicted, bool confident) {
 }
 
 void Tracker::declare_lost(const char* reason) {
-    search_cursor_ = 0;
+    sweep_.restart();
     layers_.reset();  // where the target was is no guide to where it is found again
     result_.state = TrackState::Lost;
     result_.has_contour = false;

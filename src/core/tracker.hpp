@@ -14,6 +14,7 @@
 #include "core/clock.hpp"
 #include "core/contour_tracker.hpp"
 #include "core/correlation_filter.hpp"
+#include "core/frame_sweep.hpp"
 #include "core/gaussian_smoother.hpp"
 #include "core/motion_detector.hpp"
 #include "core/motion_layers.hpp"
@@ -78,9 +79,6 @@ private:
     // Whether the lost target can have reached `p` by now: at most its radius plus the attention
     // module's largest step (attention.max_jump_px) for each frame since it was last seen.
     bool within_reach(Point p, double radius) const;
-    // The best match in the next kSearchWindows windows of a sweep over the frame on a grid of half
-    // the filter's window (the sweep goes on in the next frame where this one stopped).
-    FilterMatch search_frame();
     // The previous frame aligned with this one by `shift`, the view's (the previous frame itself for
     // none), so that differencing shows what moved in the scene.
     const GreyImage& aligned_previous(Point shift);
@@ -162,7 +160,7 @@ private:
     std::vector<float> scratch_;
     int last_count_ = 0;
     Point last_seen_;  // the last contour's centroid
-    int search_cursor_ = 0;  // the next window of search_frame()'s sweep
+    FrameSweep sweep_;  // the whole-frame search for a lost target's looks
     double psr_tracked_ = 0.0;  // the filter's mean PSR on the target while its rim was followed
     Point velocity_;
     std::optional<Point> start_point_;

@@ -474,20 +474,6 @@ bool Tracker::look_again(TimePoint deadline) {
     return match.psr >= kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
 }
 
-const GreyImage& Tracker::aligned_previous(Point shift) {
-    if (shift.x == 0.0 && shift.y == 0.0) return previous_;
-    // This frame at x is the previous one at x − shift; where that is off the previous frame, this
-    // frame's own pixel stands in (no difference there).
-    for (int y = 0; y < kFrameSize; ++y)
-        for (int x = 0; x < kFrameSize; ++x) {
-            const double px = x - shift.x, py = y - shift.y;
-            const bool off = px < 0.0 || py < 0.0 || px > kFrameSize - 1 || py > kFrameSize - 1;
-            aligned_previous_.at(x, y) = off ? frame_->at(x, y)
-                                             : static_cast<std::uint8_t>(std::lround(sample_bilinear(previous_, px, py)));
-        }
-    return aligned_previous_;
-}
-
 bool Tracker::within_reach(Point p, double radius) const {
     const double reach = radius + tunables_.attention.max_jump_px * (untracked_frames_ + 1);
     return std::hypot(p.x - last_seen_.x, p.y - last_seen_.y) <= reach;
@@ -520,7 +506,7 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     if (!has_previous_) return true;
     const ViewShift& view = view_motion_.since_previous();
     if (!still_watch_.stands_still(contour_.centroid, view)) return true;
-    result_.detection = detector_.detect(aligned_previous(view.drift), frame, tunables_.detect);
+    result_.detection = detector_.detect(align_previous(previous_, frame, view.drift, aligned_previous_), frame, tunables_.detect);
     return still_watch_.on_mover(result_.detection, contour_, detector_);
 }
 
@@ -607,7 +593,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
         } else if (look_again(deadline)) {
             found = true;
         } else if (!just_lost && has_previous_ && detection_allowed_ && view_motion_.since_previous().known) {
-            result_.detection = detector_.detect(aligned_previous(view_motion_.since_previous().shift), frame, tunables_.detect);
+            result_.detection = detector_.detect(align_previous(previous_, frame, view_motion_.since_previous().shift, aligned_previous_), frame,
+                                               tunables_.detect);
             const Detection& d = result_.detection;
             if (d.found) found = begin_detected(d, deadline);
         }

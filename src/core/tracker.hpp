@@ -79,9 +79,6 @@ private:
     // Whether the lost target can have reached `p` by now: at most its radius plus the attention
     // module's largest step (attention.max_jump_px) for each frame since it was last seen.
     bool within_reach(Point p, double radius) const;
-    // The previous frame aligned with this one by `shift`, the view's (the previous frame itself for
-    // none), so that differencing shows what moved in the scene.
-    const GreyImage& aligned_previous(Point shift);
     // The largest contour that may be the lost target found again: a few times its size.
     double reacquire_bound() const;
     // Whether this frame's contour encloses about the grey a person's target had at its start: what

@@ -151,4 +151,15 @@ const ViewShift& ViewMotion::since_previous() {
     return view_;
 }
 
+const GreyImage& align_previous(const GreyImage& previous, const GreyImage& frame, Point shift, GreyImage& out) {
+    if (shift.x == 0.0 && shift.y == 0.0) return previous;
+    for (int y = 0; y < kFrameSize; ++y)
+        for (int x = 0; x < kFrameSize; ++x) {
+            const double px = x - shift.x, py = y - shift.y;
+            const bool off = px < 0.0 || py < 0.0 || px > kFrameSize - 1 || py > kFrameSize - 1;
+            out.at(x, y) = off ? frame.at(x, y) : static_cast<std::uint8_t>(std::lround(sample_bilinear(previous, px, py)));
+        }
+    return out;
+}
+
 }  // namespace rays

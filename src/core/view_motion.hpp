@@ -18,6 +18,12 @@
 
 namespace rays {
 
+// The previous frame aligned with this one, `frame`, by the view's `shift` (ViewShift::shift or
+// drift), so that differencing the two shows what moved in the scene: `previous` itself for no shift,
+// else `out`, where this frame at x is the previous one at x − shift and this frame's own pixel stands
+// in where that is off the previous frame (no difference there).
+const GreyImage& align_previous(const GreyImage& previous, const GreyImage& frame, Point shift, GreyImage& out);
+
 struct ViewShift {
     bool known = false;  // compared with a previous frame, and enough bands agreed
     bool still = false;  // known, and the view did not move

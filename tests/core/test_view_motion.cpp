@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // Whether the view moved (core/view_motion.hpp), on views drawn here: a blocky textured world seen
 // still, panning (fast, and slower than a still view's bound), with a crowd crossing it, with a target
-// the camera follows, in changing light.
+// the camera follows, in changing light; and the previous frame aligned by the view's shift.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 
 #include "core/view_motion.hpp"
@@ -147,4 +148,35 @@ TEST_CASE("A change of light is not motion, and a flat view is still", "[view]")
     const ViewShift v = measure(sky, *image);
     CHECK(v.known);
     CHECK(v.still);
+}
+
+TEST_CASE("The previous frame aligned by the view's shift matches this one where both see the world", "[view]") {
+    // A world panned by (3, −2) px between two frames: this frame at x is the previous one at x − shift.
+    const rays::Point shift{3.0, -2.0};
+    auto previous = std::make_unique<rays::GreyImage>();
+    auto frame = std::make_unique<rays::GreyImage>();
+    for (int y = 0; y < rays::kFrameSize; ++y)
+        for (int x = 0; x < rays::kFrameSize; ++x) {
+            previous->at(x, y) = static_cast<std::uint8_t>(std::lround(smooth_blocks(x, y, 2u)));
+            frame->at(x, y) = static_cast<std::uint8_t>(std::lround(smooth_blocks(x - shift.x, y - shift.y, 2u)));
+        }
+    auto out = std::make_unique<rays::GreyImage>();
+    const rays::GreyImage& aligned = rays::align_previous(*previous, *frame, shift, *out);
+    CHECK(&aligned == out.get());
+    int worst = 0, unchanged = 0;
+    for (int y = 0; y < rays::kFrameSize; ++y)
+        for (int x = 0; x < rays::kFrameSize; ++x) {
+            worst = std::max(worst, std::abs(aligned.at(x, y) - frame->at(x, y)));
+            unchanged += aligned.at(x, y) == previous->at(x, y);
+        }
+    CHECK(worst == 0);  // off the previous frame this frame stands in; elsewhere the world moved along
+    CHECK(unchanged < rays::kFramePixels / 4);  // it was moved, not copied
+    // The other way, the shift undone, it is the previous frame that is not matched.
+    const rays::GreyImage& wrong = rays::align_previous(*previous, *frame, {-3.0, 2.0}, *out);
+    int differing = 0;
+    for (int y = 0; y < rays::kFrameSize; ++y)
+        for (int x = 0; x < rays::kFrameSize; ++x) differing += wrong.at(x, y) != frame->at(x, y);
+    CHECK(differing > rays::kFramePixels / 2);
+    // No shift: the previous frame itself.
+    CHECK(&rays::align_previous(*previous, *frame, {0.0, 0.0}, *out) == previous.get());
 }

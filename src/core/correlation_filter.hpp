@@ -4,8 +4,8 @@
 // Danelljan et al., BMVC 2014) over a square window round the target, learned where the contour is.
 // Its features (grey, gradient orientations, colour) are core/feature_window.hpp's. The window's side
 // follows the contour's size, so the filter is learned and applied at the target's scale. The
-// response's peak-to-sidelobe ratio is the match's confidence. Fixed memory; the FFT's tables are made at construction, so locate() and
-// learn() allocate nothing.
+// response's peak-to-sidelobe ratio is the match's confidence. Fixed memory; the FFT's tables are
+// made at construction, so locate() and learn() allocate nothing.
 #pragma once
 #include <array>
 #include <complex>

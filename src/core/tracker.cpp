@@ -506,7 +506,8 @@ bool Tracker::watch_still_track(const GreyImage& frame) {
     if (!has_previous_) return true;
     const ViewShift& view = view_motion_.since_previous();
     if (!still_watch_.stands_still(contour_.centroid, view)) return true;
-    result_.detection = detector_.detect(align_previous(previous_, frame, view.drift, aligned_previous_), frame, tunables_.detect);
+    const GreyImage& before = align_previous(previous_, frame, view.drift, aligned_previous_);
+    result_.detection = detector_.detect(before, frame, tunables_.detect);
     return still_watch_.on_mover(result_.detection, contour_, detector_);
 }
 
@@ -593,8 +594,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
         } else if (look_again(deadline)) {
             found = true;
         } else if (!just_lost && has_previous_ && detection_allowed_ && view_motion_.since_previous().known) {
-            result_.detection = detector_.detect(align_previous(previous_, frame, view_motion_.since_previous().shift, aligned_previous_), frame,
-                                               tunables_.detect);
+            const GreyImage& before = align_previous(previous_, frame, view_motion_.since_previous().shift, aligned_previous_);
+            result_.detection = detector_.detect(before, frame, tunables_.detect);
             const Detection& d = result_.detection;
             if (d.found) found = begin_detected(d, deadline);
         }

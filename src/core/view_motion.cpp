@@ -157,7 +157,8 @@ const GreyImage& align_previous(const GreyImage& previous, const GreyImage& fram
         for (int x = 0; x < kFrameSize; ++x) {
             const double px = x - shift.x, py = y - shift.y;
             const bool off = px < 0.0 || py < 0.0 || px > kFrameSize - 1 || py > kFrameSize - 1;
-            out.at(x, y) = off ? frame.at(x, y) : static_cast<std::uint8_t>(std::lround(sample_bilinear(previous, px, py)));
+            out.at(x, y) = off ? frame.at(x, y)
+                               : static_cast<std::uint8_t>(std::lround(sample_bilinear(previous, px, py)));
         }
     return out;
 }

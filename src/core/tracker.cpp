@@ -32,7 +32,6 @@ constexpr double kRedetectShare = 0.5;  // of the target's mean PSR while tracke
 constexpr double kPsrRate = 0.1;        // weight of the newest frame in that mean
 constexpr double kFilterAgreement = 1.0; // of the target's radius: a contour whose centroid is further from
                                          // a confident filter match has left the target
-constexpr double kViewAgreePx = 1.0;     // a view's measured shift within this of the unit's turning is the view's
 
 }  // namespace
 
@@ -56,6 +55,7 @@ bool Tracker::set_tunables(const TrackerTunables& tunables) {
     }
     tunables_ = tunables;
     smoother_.set_sigma(tunables_.rays.sigma_px);
+    likelihood_.configure(tunables_.rays.appearance_weight > 0.0, tunables_.rays.motion_layers);
     return true;
 }
 
@@ -96,52 +96,9 @@ void Tracker::reinit() {
     detector_.reset(tunables_.detect);
 }
 
-bool Tracker::learn_colours(float rate) {
-    return tunables_.rays.appearance_weight > 0.0 && appearance_.learn(*frame_, *chroma_, contour_, rate);
-}
 
 void Tracker::look_with_likelihood(Point ahead) {
-    const bool colours = tunables_.rays.appearance_weight > 0.0 && chroma_->present && appearance_.valid();
-    const bool layers = layers_read() && result_.state == TrackState::Tracking;
-    likelihood_.split_rims = colours;
-    if (colours) {
-        appearance_.likelihood(*frame_, *chroma_, likelihood_);
-        // While the view moves, what moves with the target is the target too, whatever its colours
-        // (motion_layers.hpp). On a still view the learned background tells movers from the scene,
-        // and the layers would claim every other mover going the target's way (a crowd).
-        if (layers) layers_.add_to(likelihood_, ahead);
-    } else if (layers) {
-        // Grey: no colours tell the target from the other movers going its way (a crowd, a walker's
-        // swinging legs), so the layers say only where the scene is. That is what cuts a contour
-        // off a building it took in beside the walker the unit follows.
-        likelihood_.log_odds.fill(0.0f);
-        layers_.add_background_to(likelihood_, ahead);
-    }
-    rays_.use_likelihood(colours || layers ? &likelihood_ : nullptr);
-}
-
-bool Tracker::layers_on() const {
-    return tunables_.rays.motion_layers && tunables_.rays.appearance_weight > 0.0 &&
-           (chroma_->present || expected_view_.has_value());
-}
-
-bool Tracker::layers_read() const { return layers_on() && view_moved_ && layers_.valid(); }
-
-void Tracker::learn_motion(Point last) {
-    view_moved_ = false;
-    if (!layers_on()) return;  // the view's shift is not worked out for nothing (it is, lazily, where read)
-    const ViewShift& view = view_motion_.since_previous();
-    // A grey source's layers take the view's measured shift only where the unit's own turning
-    // accounts for it: a big mover can carry ViewMotion's bands with it in a still view, and a fast
-    // turn moves the view beyond what they measure (colours outweigh such a frame's evidence; grey
-    // has nothing else).
-    const bool trusted = chroma_->present ||
-                         (expected_view_ && std::abs(view.shift.x - expected_view_->x) <= kViewAgreePx &&
-                          std::abs(view.shift.y - expected_view_->y) <= kViewAgreePx);
-    view_moved_ = view.known && !view.still && trusted;
-    if (has_previous_smoothed_ && view.known && trusted)
-        layers_.update(smoothed_, previous_smoothed_, contour_, {contour_.centroid.x - last.x, contour_.centroid.y - last.y},
-                       view.shift);
+    rays_.use_likelihood(likelihood_.look(result_.state == TrackState::Tracking, ahead));
 }
 
 void Tracker::use_seeded_colours(bool seeded) {
@@ -150,7 +107,7 @@ void Tracker::use_seeded_colours(bool seeded) {
 }
 
 void Tracker::forget_colours() {
-    appearance_.reset();
+    likelihood_.forget_colours();
     rays_.use_likelihood(nullptr);
 }
 
@@ -196,7 +153,7 @@ bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_targ
                           double max_area) {
     if (!same_target) {
         model_.reset();
-        layers_.reset();
+        likelihood_.forget_motion();
         forget_colours();
         if (from != StartFrom::Prediction) person_start_ = from == StartFrom::Person;  // a re-acquisition keeps it
     }
@@ -207,9 +164,7 @@ bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_targ
         // Round m is the target, further out mostly not: where that tells colours apart, the first
         // rays find where the target's colours end even where grey shows no edge there.
         radius = std::max(radius, kStartRadiusPx);
-        use_seeded_colours(tunables_.rays.appearance_weight > 0.0 &&
-                           appearance_.seed(*frame_, *chroma_, m, kSeedInside * radius, kSeedRingFrom * radius,
-                                            kSeedRingTo * radius));
+        use_seeded_colours(likelihood_.seed(m, kSeedInside * radius, kSeedRingFrom * radius, kSeedRingTo * radius));
     }
     return first_contour(m, from, same_target, deadline, max_area);
 }
@@ -220,15 +175,14 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     // like the box's inside (PolarPrior::set_box, TargetModel::seed_inside).
     prior_.set_box(box);
     model_.reset();
-    layers_.reset();
+    likelihood_.forget_motion();
     person_start_ = true;
     model_.seed_inside(smoothed_, box);
     // The box holds the target, a band round it does not: what the box holds beside the target
     // (its corners) is as common round it, so its colours come out near even (Staple's seed).
-    use_seeded_colours(tunables_.rays.appearance_weight > 0.0 &&
-                       appearance_.seed_box(*frame_, *chroma_, box, kBoxBand * std::max(box.w, box.h)));
+    use_seeded_colours(likelihood_.seed_box(box, kBoxBand * std::max(box.w, box.h)));
     // The box's centre need not lie on the target (core/box_start.hpp).
-    const Point m = appearance_.valid() ? box_start_.find(box, likelihood_) : box.centre();
+    const Point m = likelihood_.colours().valid() ? box_start_.find(box, likelihood_.map()) : box.centre();
     return first_contour(m, StartFrom::Person, false, deadline);
 }
 
@@ -241,7 +195,7 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     if (from == StartFrom::Person) limits.max_none_fraction = 1.0;
     rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
     const char* reason = attention_.check(contour_, contour_.centroid, limits);
-    if (reason != nullptr && !same_target && appearance_.valid()) {
+    if (reason != nullptr && !same_target && likelihood_.colours().valid()) {
         // The seeded colours did not make a target of it: grey alone, as without colour.
         forget_colours();
         rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_);
@@ -265,7 +219,7 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     }
     // The first contour is blended into the seed's colours like any tracked frame's: it may have
     // run out onto background the seed has told apart (the first contour of a new model replaces it).
-    learn_colours(kColourRate);
+    likelihood_.learn_colours(contour_, kColourRate);
     // A fresh re-acquisition (reacquire_afresh) keeps the filter until it is known to be the target.
     if (from != StartFrom::Prediction || same_target) learn_looks(same_target ? kFilterRate : 1.0f, from == StartFrom::Filter);
     if (!same_target && from != StartFrom::Prediction) psr_tracked_ = 0.0;
@@ -285,7 +239,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     // and shows only part of itself) may let a fresh start find it; a fresh start finds anything, so
     // it must look like the target did: about as grey inside, about as big.
     const TargetModel kept = model_;
-    const AppearanceModel kept_colours = appearance_;
+    const AppearanceModel kept_colours = likelihood_.colours();
     const double area = tracked_area_;
     const WholeArea whole = whole_area_;
     const double whole_grey = whole_grey_;
@@ -310,7 +264,7 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     if (alike) learn_looks(kFilterRate, false);
     if (!alike) {  // not the target: as if it had not been tried
         model_ = kept;
-        appearance_ = kept_colours;
+        likelihood_.restore_colours(kept_colours);
         look_with_likelihood();
         tracked_area_ = area;
         last_seen_ = seen;  // where the filter looks for it again
@@ -326,7 +280,7 @@ bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
     const double bound = person_chose_ ? reacquire_bound() : 0.0;
     if (bound <= 0.0) return begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
     const TargetModel kept = model_;
-    const AppearanceModel kept_colours = appearance_;
+    const AppearanceModel kept_colours = likelihood_.colours();
     const double start_grey = start_grey_;
     const bool person_start = person_start_;
     if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, bound)) {
@@ -339,7 +293,7 @@ bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
         return true;
     }
     model_ = kept;  // not the target: its learned looks are still what the filter looks for
-    appearance_ = kept_colours;
+    likelihood_.restore_colours(kept_colours);
     look_with_likelihood();
     person_start_ = person_start;
     return false;
@@ -413,10 +367,11 @@ void Tracker::track(TimePoint deadline) {
         return;
     }
     follow(last);
-    learn_motion(last);
+    likelihood_.learn_motion(smoothed_, contour_, {contour_.centroid.x - last.x, contour_.centroid.y - last.y},
+                             view_motion_);
     if (match_.psr > 0.0) psr_tracked_ = psr_tracked_ == 0.0 ? match_.psr : psr_tracked_ + kPsrRate * (match_.psr - psr_tracked_);
     model_.learn(contour_, scratch_);
-    learn_colours(kColourRate);
+    likelihood_.learn_colours(contour_, kColourRate);
     learn_looks(kFilterRate, true);
     remember_contour();
 }
@@ -495,7 +450,7 @@ const char* Tracker::check_contour(Point predicted, bool confident) {
 
 void Tracker::declare_lost(const char* reason) {
     sweep_.restart();
-    layers_.reset();  // where the target was is no guide to where it is found again
+    likelihood_.forget_motion();  // where the target was is no guide to where it is found again
     result_.state = TrackState::Lost;
     result_.has_contour = false;
     result_.lost_reason = reason;
@@ -517,8 +472,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     result_.off_target = false;
     result_.match_psr = 0.0;
     result_.detection = {};
-    frame_ = &frame;
     chroma_ = &chroma;
+    likelihood_.begin_frame(frame, chroma, expected_view_);
     smoother_.smooth(frame, smoothed_);
     // A grey source's layers are read only in track(), where each try puts the target.
     if (chroma.present) look_with_likelihood();
@@ -608,9 +563,8 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
     if (keep_background) background_.learn(smoothed_, result_.has_contour ? &contour_ : nullptr);
     external_prediction_.reset();
     previous_ = frame;
-    has_previous_smoothed_ = layers_on();  // only the layers read it
+    likelihood_.keep_frame(smoothed_);
     expected_view_.reset();
-    if (has_previous_smoothed_) previous_smoothed_ = smoothed_;
     has_previous_ = true;
     return result_;
 }

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "core/active_rays.hpp"
-#include "core/appearance_model.hpp"
 #include "core/attention.hpp"
 #include "core/background_model.hpp"
 #include "core/box_start.hpp"
@@ -17,8 +16,8 @@
 #include "core/frame_sweep.hpp"
 #include "core/gaussian_smoother.hpp"
 #include "core/motion_detector.hpp"
-#include "core/motion_layers.hpp"
 #include "core/still_track_watch.hpp"
+#include "core/target_likelihood.hpp"
 #include "core/view_motion.hpp"
 
 namespace rays {
@@ -51,7 +50,7 @@ public:
     const FrameResult& result() const override { return result_; }
     const Contour& contour() const override { return contour_; }
     const ActiveRays& rays() const { return rays_; }
-    const AppearanceModel& appearance() const { return appearance_; }
+    const AppearanceModel& appearance() const { return likelihood_.colours(); }
 
 private:
     Point best_start(Point centre, double radius, TimePoint deadline);
@@ -99,9 +98,6 @@ private:
     // detector is asked, on this frame against the previous one aligned by the view's drift.
     bool watch_still_track(const GreyImage& frame);
     void remember_contour();
-    // Learns the target's colours from this frame's contour (at `rate`; the first contour replaces
-    // them); false when the frame has no colour, the term is off or the contour is too small.
-    bool learn_colours(float rate);
     // The rays look with the learned colours on this frame (the likelihood map, with the motion
     // layers while the view moves), with the layers' background alone on a grey source, or without
     // when there is neither. The layers' map is moved on by `ahead`, the target's shift since the
@@ -112,13 +108,6 @@ private:
     // with at once where it was seeded, else none.
     void use_seeded_colours(bool seeded);
     void forget_colours();
-    // Whether the motion layers are kept: both terms on, and a colour source or a caller that says
-    // how the unit's turning moved the view.
-    bool layers_on() const;
-    // Whether the rays read them this frame: the view moved, and they have seen enough.
-    bool layers_read() const;
-    // After a frame tracked by its rim (the centroid was at `last`): the layers learn from it.
-    void learn_motion(Point last);
     // Learns the correlation filter on this frame's contour at `rate` (1: a new target's first),
     // centred on its centroid or on `at`; `located`: from the window the filter looked in this frame.
     void learn_looks(float rate, bool located, const Point* at = nullptr);
@@ -129,8 +118,6 @@ private:
     TrackerTunables tunables_;
     GaussianSmoother smoother_;
     FloatImage smoothed_;
-    FloatImage previous_smoothed_;  // the previous frame's, for the motion layers ...
-    bool has_previous_smoothed_ = false;  // ... kept (a colour source with the layers on)
     GreyImage previous_;
     bool has_previous_ = false;
     MotionDetector detector_;
@@ -139,16 +126,12 @@ private:
     ActiveRays rays_;
     PolarPrior prior_;
     TargetModel model_;
-    AppearanceModel appearance_;  // the target's colours against its surroundings (colour sources)
-    MotionLayers layers_;         // where things move with the target, not with the view
-    bool view_moved_ = false;     // the view moved between the last two frames tracked by their rim
-    LikelihoodMap likelihood_;    // this frame's colours (and motion) seen through them
+    TargetLikelihood likelihood_;  // the target's colours and motion layers, as the rays read them
     BoxStartPoint box_start_;     // where a box start's rays begin
     CorrelationFilter filter_;    // the target's looks, to find it before the rays look for its rim
     CorrelationFilter start_looks_;  // a person's target's looks at its first contour (not learned since)
     FilterMatch match_;           // where it found the target this frame
-    const GreyImage* frame_ = nullptr;  // the frame being processed, and its colour
-    const Chroma* chroma_ = nullptr;
+    const Chroma* chroma_ = nullptr;  // the colour of the frame being processed
     Attention attention_;
     StillTrackWatch still_watch_;  // whether a track standing still is on the mover (still_track_watch.hpp)
     Contour contour_;

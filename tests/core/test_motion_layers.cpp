@@ -13,6 +13,7 @@
 #include "core/tracker.hpp"
 #include "support/block_texture.hpp"
 #include "support/camouflaged_target_scene.hpp"
+#include "support/map_means.hpp"
 
 namespace {
 
@@ -46,28 +47,10 @@ void circle(Contour& contour, Point centre, double radius) {
     rays::polygon_area_centroid(contour.points.data(), contour.size, contour.area, contour.centroid);
 }
 
-struct Means {
-    double target = 0.0;      // over the target's cells outside the contour (radius 8 … 12)
-    double background = 0.0;  // over the cells further than 20 px from the target
-    double magnitude = 0.0;   // mean |log-odds| over the whole map
-};
-
-Means read(const MotionLayers& layers, Point target) {
+rays::test::MapMeans read(const MotionLayers& layers, Point target) {
     LikelihoodMap map;
     layers.add_to(map, {0.0, 0.0});
-    Means m;
-    int nt = 0, nb = 0;
-    for (int j = 0; j < rays::kChromaSize; ++j)
-        for (int i = 0; i < rays::kChromaSize; ++i) {
-            const double d = std::hypot(2 * i + 0.5 - target.x, 2 * j + 0.5 - target.y);
-            const float v = map.cell(i, j);
-            m.magnitude += std::abs(v) / rays::kChromaPixels;
-            if (d >= 8.0 && d <= 12.0) m.target += v, ++nt;
-            if (d > 20.0) m.background += v, ++nb;
-        }
-    m.target /= nt;
-    m.background /= nb;
-    return m;
+    return rays::test::map_means(map, target);
 }
 
 struct Run {
@@ -98,7 +81,7 @@ TEST_CASE("MotionLayers calls the whole target the target from a contour round p
     Run r;
     const Point target = r.run(6, {1.0, 0.0}, {-1.5, 0.5});
     REQUIRE(r.layers.valid());
-    const Means m = read(r.layers, target);
+    const rays::test::MapMeans m = read(r.layers, target);
     INFO("target " << m.target << ", background " << m.background);
     CHECK(m.target > 1.5);       // beyond the contour, on the target: it moves with it
     CHECK(m.background < -1.5);  // the world moves with the view

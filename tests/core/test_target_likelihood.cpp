@@ -14,6 +14,7 @@
 #include "core/target_likelihood.hpp"
 #include "core/view_motion.hpp"
 #include "support/block_texture.hpp"
+#include "support/map_means.hpp"
 
 namespace {
 
@@ -78,28 +79,6 @@ struct Scene {
     }
 };
 
-struct Means {
-    double target = 0.0;      // over the target's cells outside the contour (radius 8 … 12)
-    double background = 0.0;  // over the cells further than 20 px from the target
-    float most = -1e9f;       // the largest log-odds anywhere
-};
-
-Means read(const rays::LikelihoodMap& map, Point target) {
-    Means m;
-    int nt = 0, nb = 0;
-    for (int j = 0; j < rays::kChromaSize; ++j)
-        for (int i = 0; i < rays::kChromaSize; ++i) {
-            const double d = std::hypot(2 * i + 0.5 - target.x, 2 * j + 0.5 - target.y);
-            const float v = map.cell(i, j);
-            m.most = std::max(m.most, v);
-            if (d >= 8.0 && d <= 12.0) m.target += v, ++nt;
-            if (d > 20.0) m.background += v, ++nb;
-        }
-    m.target /= nt;
-    m.background /= nb;
-    return m;
-}
-
 constexpr Point kStep{1.0, 0.0};
 constexpr Point kPan{-1.5, 0.5};
 
@@ -114,12 +93,12 @@ TEST_CASE("TargetLikelihood: with colour, the layers call the whole target the t
     const rays::LikelihoodMap* map = s.likelihood.look(true, {0.0, 0.0});
     REQUIRE(map != nullptr);
     CHECK(map->split_rims);
-    const Means m = read(*map, s.target);
+    const rays::test::MapMeans m = rays::test::map_means(*map, s.target);
     INFO("target " << m.target << ", background " << m.background);
     CHECK(m.target > 1.0);
     CHECK(m.background < -1.0);
     // Not while the track is lost: where the target was is no guide to where it is found again.
-    const Means lost = read(*s.likelihood.look(false, {0.0, 0.0}), s.target);
+    const rays::test::MapMeans lost = rays::test::map_means(*s.likelihood.look(false, {0.0, 0.0}), s.target);
     CHECK(lost.target < 0.5 * m.target);
 }
 
@@ -132,7 +111,7 @@ TEST_CASE("TargetLikelihood: on a grey source the layers say only where the scen
     const rays::LikelihoodMap* map = s.likelihood.look(true, {0.0, 0.0});
     REQUIRE(map != nullptr);
     CHECK_FALSE(map->split_rims);
-    const Means m = read(*map, s.target);
+    const rays::test::MapMeans m = rays::test::map_means(*map, s.target);
     INFO("target " << m.target << ", background " << m.background << ", most " << m.most);
     CHECK(m.background < -1.0);
     CHECK(m.most <= 0.0f);  // never the target: other movers going its way would be taken for it

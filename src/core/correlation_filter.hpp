@@ -28,6 +28,7 @@ public:
     static constexpr int kChannels = FeatureWindow::kChannels;
     static constexpr int kPairs = FeatureWindow::kPairs;
     static constexpr double kPadding = 2.5;  // window side / target size (target and its surroundings)
+    static constexpr double kConfidentPsr = 5.0;  // a match this clear of its sidelobe says where the target is
 
     CorrelationFilter();
 

@@ -12,6 +12,8 @@ namespace rays {
 
 struct TargetModel {
     static constexpr int kBins = 32;  // angular bins round the target
+    // Two insides whose mean grey differs by at most this share of the frame's mean grey look alike.
+    static constexpr double kGreyTolerance = 0.15;
 
     bool valid = false;
     std::array<float, kBins> polarity{};     // mean sign of dρ/dλ at the rim, −1 … 1

@@ -13,19 +13,17 @@ constexpr double kStartRadiusPx = 10.0;  // least first guess of the contour siz
 constexpr int kStartCandidates = 6;     // start points tried round a detected region's centre
 constexpr double kVelocityRate = 0.7;     // weight of the newest centroid step in the velocity
 constexpr double kRetryMinSpeedPx = 1.0;  // slower targets are not worth a second prediction
-constexpr double kReacquireGreyTolerance = 0.15;  // of the frame's mean grey: a fresh re-acquisition's inside
-constexpr double kReacquireAreaRatio = 0.3;       // its area within this factor of the lost contour's (or
-                                                  // above, of the whole target's), either way
-constexpr double kReacquireSideShift = 0.6;       // of the target's radius: the points beside a hidden middle
-constexpr int kFreshReacquireFrames = 10;         // ... and only this soon after the loss (a target in passing
-                                                  // behind something thin, not one that is gone)
+constexpr double kReacquireAreaRatio = 0.3;  // a fresh re-acquisition's area within this factor of the lost
+                                             // contour's (or above, of the whole target's), either way ...
+constexpr int kFreshReacquireFrames = 10;    // ... and only this soon after the loss (a target in passing
+                                             // behind something thin, not one that is gone)
+constexpr double kReacquireSideShift = 0.6;  // of the target's radius: the points beside a hidden middle
 constexpr float kColourRate = 0.1f;      // weight of the newest contour in the learned colours (Staple: 0.04)
 constexpr double kSeedInside = 0.3;      // of a new target's radius: surely the target round its start point
 constexpr double kSeedRingFrom = 2.0;    // ... and from this many radii ...
 constexpr double kSeedRingTo = 3.0;      // ... to this many, mostly not
 constexpr double kBoxBand = 0.15;        // of a box's longer side: the band round it whose colours are background
 constexpr float kFilterRate = 0.02f;     // weight of the newest frame in the correlation filter (CSRT: 0.02)
-constexpr double kConfidentPsr = 5.0;    // a filter match this clear of its sidelobe says where the target is
 constexpr double kRedetectShare = 0.5;  // of the target's mean PSR while tracked: what a match found
                                         // elsewhere in the frame must reach (a textured background
                                         // gives 5–8 here and there; real targets 9–48, median)
@@ -60,7 +58,7 @@ bool Tracker::set_tunables(const TrackerTunables& tunables) {
 }
 
 void Tracker::start_at(Point m) {
-    person_chose_ = true;
+    chosen_.choose();
     start_point_ = m;
     start_box_.reset();
     reacquire_ = false;
@@ -70,7 +68,7 @@ bool Tracker::start_in(const Box& box) {
     if (box_problem(box) != nullptr) return false;
     start_point_ = box.centre();
     start_box_ = box;
-    person_chose_ = true;
+    chosen_.choose();
     reacquire_ = false;
     return true;
 }
@@ -92,7 +90,7 @@ void Tracker::release() {
 
 void Tracker::reinit() {
     release();
-    person_chose_ = false;
+    chosen_.forget_choice();
     detector_.reset(tunables_.detect);
 }
 
@@ -155,7 +153,7 @@ bool Tracker::begin_track(Point m, double radius, StartFrom from, bool same_targ
         model_.reset();
         likelihood_.forget_motion();
         forget_colours();
-        if (from != StartFrom::Prediction) person_start_ = from == StartFrom::Person;  // a re-acquisition keeps it
+        if (from != StartFrom::Prediction) chosen_.begin(from == StartFrom::Person);  // a re-acquisition keeps it
     }
     prior_.set_circle(std::max(radius, kStartRadiusPx));
     if (from == StartFrom::Detector) m = best_start(m, radius, deadline);
@@ -176,7 +174,7 @@ bool Tracker::begin_box_track(const Box& box, TimePoint deadline) {
     prior_.set_box(box);
     model_.reset();
     likelihood_.forget_motion();
-    person_start_ = true;
+    chosen_.begin(true);
     model_.seed_inside(smoothed_, box);
     // The box holds the target, a band round it does not: what the box holds beside the target
     // (its corners) is as common round it, so its colours come out near even (Staple's seed).
@@ -225,11 +223,8 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
     if (!same_target && from != StartFrom::Prediction) psr_tracked_ = 0.0;
     model_.learn(contour_, scratch_);
     // A person's target as it looked at the start: the learned looks drift with the contour, this does not.
-    if (from == StartFrom::Person && !same_target) {
-        start_grey_ = inside_grey_share();
-        start_looks_.copy_learned(filter_);
-    }
-    if (from == StartFrom::Detector) start_grey_ = 0.0;
+    if (from == StartFrom::Person && !same_target) chosen_.remember_start(inside_grey_share(), filter_);
+    if (from == StartFrom::Detector) chosen_.forget_start_grey();
     remember_contour();
     return true;
 }
@@ -256,8 +251,8 @@ bool Tracker::reacquire_afresh(Point m, double radius, TimePoint deadline) {
     // hold some of what hid part of it).
     const double frame = std::max<double>(kept.frame_mean, 1.0);
     const double was = mean_inside(kept), now = mean_inside(model_);
-    const bool grey_alike = std::abs(now - was) <= kReacquireGreyTolerance * frame ||
-                            (whole_grey > 0.0 && std::abs(now / frame - whole_grey) <= kReacquireGreyTolerance);
+    const bool grey_alike = std::abs(now - was) <= TargetModel::kGreyTolerance * frame ||
+                            (whole_grey > 0.0 && std::abs(now / frame - whole_grey) <= TargetModel::kGreyTolerance);
     const bool alike = found && grey_alike && contour_.area >= kReacquireAreaRatio * area && contour_.area <= bound;
     whole_area_ = whole;  // the same target, if alike
     whole_grey_ = whole_grey;
@@ -277,25 +272,21 @@ bool Tracker::begin_detected(const Detection& d, TimePoint deadline) {
     // bigger (the group that holds it, the background a pan sweeps past a runner) is not it. That
     // holds too once the detector has found again a mover that kept no person's standing: it was
     // taken, at that size, for the person's target.
-    const double bound = person_chose_ ? reacquire_bound() : 0.0;
+    const double bound = chosen_.chosen() ? reacquire_bound() : 0.0;
     if (bound <= 0.0) return begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline);
     const TargetModel kept = model_;
     const AppearanceModel kept_colours = likelihood_.colours();
-    const double start_grey = start_grey_;
-    const bool person_start = person_start_;
+    const ChosenTarget::Standing standing = chosen_.standing_now();
     if (begin_track(d.centre, d.radius_px, StartFrom::Detector, false, deadline, bound)) {
         // A mover that looks as the person's target did at the start is that target found again: it
         // keeps the person's standing (the watch's exemption, the grey at the start).
-        if (start_looks_.locate(smoothed_, *chroma_, contour_.centroid).psr >= kConfidentPsr) {
-            person_start_ = true;
-            start_grey_ = start_grey;
-        }
+        chosen_.found_again(smoothed_, *chroma_, contour_.centroid, standing);
         return true;
     }
     model_ = kept;  // not the target: its learned looks are still what the filter looks for
     likelihood_.restore_colours(kept_colours);
     look_with_likelihood();
-    person_start_ = person_start;
+    chosen_.restore(standing);
     return false;
 }
 
@@ -313,7 +304,7 @@ void Tracker::track(TimePoint deadline) {
     const Point expected = external_prediction_ ? *external_prediction_ : Point{last.x + v.x, last.y + v.y};
     match_ = filter_.locate(smoothed_, *chroma_, expected);
     result_.match_psr = match_.psr;
-    const bool confident = match_.psr >= kConfidentPsr;
+    const bool confident = match_.psr >= CorrelationFilter::kConfidentPsr;
     if (confident) v = {match_.at.x - last.x, match_.at.y - last.y};
     // Where a confident filter match says the target is, once: a measurement, not a guess. Without
     // one, constant velocity first; when that contour fails the attention check (the target turned
@@ -402,16 +393,12 @@ bool Tracker::looks_like_target() const {
     float sum = 0.0f;
     for (float v : model_.inside_mean) sum += v;
     const double learned = sum / static_cast<float>(TargetModel::kBins);
-    return std::abs(mean_inside_grey(contour_) - learned) <= kReacquireGreyTolerance * std::max<double>(model_.frame_mean, 1.0);
+    return std::abs(mean_inside_grey(contour_) - learned) <= TargetModel::kGreyTolerance * std::max<double>(model_.frame_mean, 1.0);
 }
 
 double Tracker::reacquire_bound() const { return std::max(tracked_area_, whole_area_.area()) / kReacquireAreaRatio; }
 
 double Tracker::inside_grey_share() const { return mean_inside_grey(contour_) / std::max<double>(model_.frame_mean, 1.0); }
-
-bool Tracker::as_grey_as_at_start() const {
-    return start_grey_ > 0.0 && std::abs(inside_grey_share() - start_grey_) <= kReacquireGreyTolerance;
-}
 
 bool Tracker::look_again(TimePoint deadline) {
     if (!filter_.valid()) return false;
@@ -419,14 +406,14 @@ bool Tracker::look_again(TimePoint deadline) {
     // First where it was last seen ...
     const FilterMatch near = filter_.locate(smoothed_, *chroma_, last_seen_);
     result_.match_psr = near.psr;
-    if (near.psr >= kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline)) return true;
+    if (near.psr >= CorrelationFilter::kConfidentPsr && begin_track(near.at, last_radius, StartFrom::Filter, true, deadline)) return true;
     // ... then anywhere in the frame it can have reached, where a match must be about as clear as the
     // target's were.
     const FilterMatch found = sweep_.next(filter_, smoothed_, *chroma_);
-    if (found.psr < std::max(kConfidentPsr, kRedetectShare * psr_tracked_) || !within_reach(found.at, last_radius)) return false;
+    if (found.psr < std::max(CorrelationFilter::kConfidentPsr, kRedetectShare * psr_tracked_) || !within_reach(found.at, last_radius)) return false;
     const FilterMatch match = filter_.locate(smoothed_, *chroma_, found.at);  // centred on it: learned from there
     result_.match_psr = match.psr;
-    return match.psr >= kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
+    return match.psr >= CorrelationFilter::kConfidentPsr && begin_track(match.at, last_radius, StartFrom::Filter, true, deadline);
 }
 
 bool Tracker::within_reach(Point p, double radius) const {
@@ -504,13 +491,9 @@ const FrameResult& Tracker::process(const GreyImage& frame, const Chroma& chroma
         // A person's target that the filter still finds, and that is as grey as it was at the start,
         // is the target, standing still or not — unless the target as it looked at the start is
         // found where the motion is, surely and more clearly than where the track stands.
-        auto confirmed = [&] {
-            if (!person_start_ || match_.psr < kConfidentPsr || !as_grey_as_at_start()) return false;
-            const double here = start_looks_.locate(smoothed_, chroma, contour_.centroid).psr;
-            const double there = start_looks_.locate(smoothed_, chroma, result_.detection.centre).psr;
-            return there < kConfidentPsr || there <= here;
-        };
-        if (result_.state == TrackState::Tracking && !watch_still_track(frame) && !confirmed()) {
+        if (result_.state == TrackState::Tracking && !watch_still_track(frame) &&
+            !chosen_.vouches_for(smoothed_, chroma, contour_.centroid, result_.detection.centre, match_.psr,
+                                 inside_grey_share())) {
             declare_lost("the track stood still while motion went on away from it");
             result_.off_target = true;
             filter_.reset();  // it learned the looks of something beside the mover: not to be looked for again

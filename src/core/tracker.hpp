@@ -10,6 +10,7 @@
 #include "core/attention.hpp"
 #include "core/background_model.hpp"
 #include "core/box_start.hpp"
+#include "core/chosen_target.hpp"
 #include "core/clock.hpp"
 #include "core/contour_tracker.hpp"
 #include "core/correlation_filter.hpp"
@@ -80,9 +81,6 @@ private:
     bool within_reach(Point p, double radius) const;
     // The largest contour that may be the lost target found again: a few times its size.
     double reacquire_bound() const;
-    // Whether this frame's contour encloses about the grey a person's target had at its start: what
-    // the learned looks cannot tell once they have drifted onto background with the contour.
-    bool as_grey_as_at_start() const;
     // This frame's contour's inside grey over the frame's mean grey.
     double inside_grey_share() const;
     void track(TimePoint deadline);
@@ -129,7 +127,7 @@ private:
     TargetLikelihood likelihood_;  // the target's colours and motion layers, as the rays read them
     BoxStartPoint box_start_;     // where a box start's rays begin
     CorrelationFilter filter_;    // the target's looks, to find it before the rays look for its rim
-    CorrelationFilter start_looks_;  // a person's target's looks at its first contour (not learned since)
+    ChosenTarget chosen_;         // a person's target: which track is it, and its looks at the start
     FilterMatch match_;           // where it found the target this frame
     const Chroma* chroma_ = nullptr;  // the colour of the frame being processed
     Attention attention_;
@@ -152,14 +150,9 @@ private:
     GreyImage aligned_previous_;     // the previous frame moved as the view moved, for differencing
     int lost_frames_ = 0;
     int untracked_frames_ = 0;  // frames since the last one with a contour
-    bool person_start_ = false;  // a person said where the target is (start_at, start_in)
-    // A person chose the target (start_at, start_in) since the last reinit(): whoever found it last,
-    // the detector looks for it at its own size.
-    bool person_chose_ = false;
     double tracked_area_ = 0;   // area of the last contour accepted as the target
     WholeArea whole_area_;      // the target's size, for looking for it again after an occlusion
     double whole_grey_ = 0;     // its inside grey / the frame's mean grey while whole (running; 0: none yet)
-    double start_grey_ = 0;     // a person's target's inside grey / the frame's mean at its start (0: none)
     FrameResult result_;
 };
 

@@ -82,11 +82,17 @@ struct StepperRig {
         });
     }
 
-    // The driver's state from a report the pulse thread published after this call began.
+    // The driver's state from a report the pulse thread published after this call began. read()
+    // takes the newest report without waiting and keeps the last one it took while the pulse
+    // thread is publishing, so it is asked again until what it gives is that new.
     ptu::DriverStatus read(ptu::PtuState& state) {
         const TimePoint asked = clock.now();
-        eventually([&] { return driver->report().state.stamp > asked; });
-        return driver->read(state, clock.now());
+        ptu::DriverStatus status;
+        eventually([&] {
+            status = driver->read(state, clock.now());
+            return state.stamp > asked;
+        });
+        return status;
     }
 
     SteadyClock clock;

@@ -28,6 +28,7 @@ ptu::DriverStatus GpioStepper::configure() {
     if (ptu::DriverStatus status = lines_.open(config_.request); !status.ok) return status;
     configured_ = true;
     engine_.start();
+    last_ = report();  // read() keeps this until it takes a newer one
     return ptu::DriverStatus::success();
 }
 

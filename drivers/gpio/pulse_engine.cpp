@@ -35,6 +35,7 @@ PulseEngine::PulseEngine(const StepperConfig& config, GpioLines& lines, const Cl
 void PulseEngine::start() {
     if (thread_.joinable()) return;
     quit_.store(false);
+    publish(clock_.now());  // the axes as they start: no reader ever sees the slot's empty value
     thread_ = std::thread([this] { run(); });
 }
 

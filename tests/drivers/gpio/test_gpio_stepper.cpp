@@ -244,6 +244,26 @@ TEST_CASE("gpio-stepper: a stale command stream ramps the axes to rest, and the 
     CHECK(eventually([&] { return lines.edge_count() > edges; }));
 }
 
+TEST_CASE("gpio-stepper: from configure on, read gives a state the pulse thread published", "[gpio]") {
+    // Asked at once, before the pulse thread may have run: the axes as they start, stamped on the
+    // driver's clock, never the empty state of a report not yet published.
+    HandClock clock;
+    clock.set_seconds(10.0);
+    gpio::FakeGpioLines lines;
+    lines.add_motor(kPanStep, kPanDir);
+    lines.add_motor(kTiltStep, kTiltDir);
+    std::string error;
+    const std::unique_ptr<gpio::GpioStepper> driver = gpio::make_gpio_stepper_driver(rig_settings(), clock, lines, error);
+    REQUIRE(driver != nullptr);
+    REQUIRE(driver->configure().ok);
+    CHECK(driver->report().state.stamp == clock.now());
+    ptu::PtuState state;
+    state.axes[0].position_rad = 1.0;
+    CHECK(driver->read(state, clock.now()).ok);
+    CHECK(state.stamp == clock.now());
+    CHECK(state.axes[0].position_rad == 0.0);
+}
+
 TEST_CASE("gpio-stepper: an I/O error stops, faults, reopens with backoff and recovers", "[gpio]") {
     StepperRig rig;
     REQUIRE(rig.drive(command(CommandMode::Velocity, deg(30.0), 0.0), 0.2));

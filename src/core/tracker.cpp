@@ -200,8 +200,12 @@ bool Tracker::first_contour(Point m, StartFrom from, bool same_target, TimePoint
         reason = attention_.check(contour_, contour_.centroid, limits);
     }
     // A person's point is on the target: a contour that has moved off it is of something beside it;
-    // the contour seen from the point itself is the target's. (A box's centre need not be on it.)
-    if (from == StartFrom::Person && !start_box_ && !contour_contains(contour_, m)) {
+    // the contour seen from the point itself is the target's. So is it where most rays found no edge
+    // (more than a tracked contour may have): that contour is mostly the prior, and its centre of
+    // gravity (eq. 11) is where the few edges found pull it, not the target's. (A box's centre need
+    // not be on the target.)
+    const bool mostly_prior = contour_.no_edge_rays > tunables_.attention.max_none_fraction * contour_.size;
+    if (from == StartFrom::Person && !start_box_ && (!contour_contains(contour_, m) || mostly_prior)) {
         rays_.extract(smoothed_, m, prior_, false, model_, clock_, deadline, contour_, -1, false);
         attention_.reset();  // the contour it replaces is no previous frame's
         reason = attention_.check(contour_, contour_.centroid, limits);

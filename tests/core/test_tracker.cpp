@@ -596,6 +596,55 @@ TEST_CASE("A point start's first contour encloses the point where the rays' cent
     }
 }
 
+namespace {
+
+// A still camera over a mottled plain (grey 150 ± 18): a thin walker (7 × 23 px), `darker` grey
+// levels below the plain and mottled as it is, with a dark box (grey 60) 7 px to its left.
+struct WalkerOnMottledPlain {
+    explicit WalkerOnMottledPlain(double darker_by) : darker(darker_by) {}
+    static constexpr double kX = 64.0, kY = 64.0;
+    double darker;
+    SteadyClock clock;
+    Tracker tracker{TrackerConfig{}, clock};
+    rays::GreyImage image;
+
+    TrackState start(Point at) {
+        for (int y = 0; y < rays::kFrameSize; ++y)
+            for (int x = 0; x < rays::kFrameSize; ++x) {
+                double grey = 150.0 + 12.0 * std::sin(0.21 * x + 0.9) * std::cos(0.17 * y + 0.4) +
+                              6.0 * std::sin(0.53 * x - 0.31 * y);
+                if (std::abs(x - kX) <= 3.0 && std::abs(y - kY) <= 11.0) grey -= darker;
+                if (x >= kX - 30 && x <= kX - 10 && std::abs(y - kY + 4.0) <= 10.0) grey = 60.0;
+                image.at(x, y) = static_cast<std::uint8_t>(std::clamp(grey, 0.0, 255.0));
+            }
+        tracker.start_at(at);
+        return tracker.process(image, rays::TimePoint::max()).state;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("A point start's first contour that found few edges is seen from the point itself", "[tracker]") {
+    // On the faint walker most rays from the point find no edge: the contour is mostly the prior,
+    // and its centre of gravity (eq. 11) is where the few edges found pull it (6 px off, before),
+    // not the target's. The contour seen from the person's point is taken. Where the rays find the
+    // walker's rim, eq. 11 moves m from a point 2 px off its middle as before.
+    const Point at{WalkerOnMottledPlain::kX + 2.0, WalkerOnMottledPlain::kY};
+    for (const double darker : {14.0, 70.0}) {
+        WalkerOnMottledPlain run(darker);
+        REQUIRE(run.start(at) == TrackState::Tracking);
+        const rays::Contour& c = run.tracker.contour();
+        const double m_moved = std::hypot(c.ref.x - at.x, c.ref.y - at.y);
+        INFO("walker " << darker << " grey levels darker: " << c.no_edge_rays << " of " << c.size
+                       << " rays without an edge, m moved " << m_moved << " px");
+        const bool few_edges = c.no_edge_rays > TrackerConfig{}.tunables.attention.max_none_fraction * c.size;
+        CHECK(few_edges == (darker < 50.0));
+        if (few_edges) CHECK(m_moved < 1e-9);
+        else CHECK(m_moved > 1.0);
+        CHECK(rays::contour_contains(c, at));
+    }
+}
+
 TEST_CASE("A box start gets the extent of a target touching something alike", "[tracker][box]") {
     // The box says which part is the target. The target then walks off the rectangle, the track with it.
     TexturedTarget box(-0.5, true);
